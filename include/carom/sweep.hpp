@@ -1,0 +1,69 @@
+// carom: exact time of impact of a moving ball against another ball, a point, a segment or an arc.
+//
+// Two forms of every query:
+// - time form, time_of_impact_*: velocities in length per time unit and a horizon (>= 0); the
+//   impact time t lies in [0, horizon].
+// - step form, sweep_*: the tutorial's movement vectors (how far each ball moves during the step);
+//   t is the fraction of the step in [0, 1]. It is the time form with horizon 1.
+//
+// The answer is closed form (a quadratic solved with the cancellation-free root; see
+// docs/derivation.md). How to use it: move both balls to a_at and b_at (or advance them by t),
+// then respond with carom::bounce using impact.normal.
+//
+// Conventions, kept by every query:
+// - normal is a unit vector from A (the first, moving ball) towards B (the other ball or the
+//   static shape). For ball against ball it is the direction from A's centre to B's centre.
+// - A contact counts only when the two approach at that instant. Touching and separating, or
+//   a tangential graze (the relative motion only brushes the contact distance), is no hit.
+// - Starting overlapped is reported, never hidden: overlapping is set, t = 0, a_at/b_at are the
+//   start positions and normal points from A to B's nearest part; hit is set only when they
+//   approach (a caller resolving contacts must then respond at once).
+// - All arguments are validated: NaN or infinite values, radius <= 0, a negative horizon or an
+//   arc span outside [0, 2π] throw carom::InvalidArgument naming the argument and its value.
+#pragma once
+
+#include "carom/shapes.hpp"
+#include "carom/vec2.hpp"
+
+namespace carom {
+
+struct Impact {
+  bool hit = false;          // they come into contact, approaching, within [0, horizon]
+  bool overlapping = false;  // they already overlap at t = 0
+  double t = 0.0;            // time (or fraction of the step) of the contact; 0 when no hit
+  Vec2 a_at;                 // A's centre at t
+  Vec2 b_at;                 // B's centre at t; for a static shape, the touched point (= point)
+  Vec2 normal;               // unit, from A towards B, at t
+  Vec2 point;                // the contact point, on A's surface and on B's
+};
+
+// ---- time form -------------------------------------------------------------------------------
+
+// Two balls moving with constant velocities. Symmetric: swapping A and B gives the same t and
+// the opposite normal.
+[[nodiscard]] Impact time_of_impact_ball_ball(const Ball& a, Vec2 velocity_a, const Ball& b,
+                                              Vec2 velocity_b, double horizon);
+
+// A moving ball against a fixed point (a ball of radius zero, or the corner of a wall).
+[[nodiscard]] Impact time_of_impact_ball_point(const Ball& a, Vec2 velocity_a, Vec2 point,
+                                               double horizon);
+
+// A moving ball against a fixed segment: its interior from either side, and its end points.
+[[nodiscard]] Impact time_of_impact_ball_segment(const Ball& a, Vec2 velocity_a,
+                                                 const Segment& segment, double horizon);
+
+// A moving ball against a fixed arc: from outside, from inside (a ball in a bowl), and at the
+// arc's end points.
+[[nodiscard]] Impact time_of_impact_ball_arc(const Ball& a, Vec2 velocity_a, const Arc& arc,
+                                             double horizon);
+
+// ---- step form (movement vectors, t in [0, 1]) -----------------------------------------------
+
+// The tutorial's "2 moving balls": A moves by move_a and B by move_b during the step. With
+// move_b left out, B stands still.
+[[nodiscard]] Impact sweep_ball_ball(const Ball& a, Vec2 move_a, const Ball& b, Vec2 move_b = {});
+[[nodiscard]] Impact sweep_ball_point(const Ball& a, Vec2 move_a, Vec2 point);
+[[nodiscard]] Impact sweep_ball_segment(const Ball& a, Vec2 move_a, const Segment& segment);
+[[nodiscard]] Impact sweep_ball_arc(const Ball& a, Vec2 move_a, const Arc& arc);
+
+}  // namespace carom

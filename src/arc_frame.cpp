@@ -1,0 +1,52 @@
+#include "arc_frame.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "validate.hpp"
+
+namespace carom::detail {
+
+bool ArcFrame::contains(Vec2 direction) const noexcept {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  if (span >= kTwoPi) return true;
+  if (span <= std::numbers::pi) {
+    // Counter-clockwise of the start and clockwise of the end. The dot products reject the
+    // direction opposite a very short arc, for which both cross products vanish.
+    return cross(start_direction, direction) >= 0.0 && cross(direction, end_direction) >= 0.0 &&
+           (dot(direction, start_direction) >= 0.0 || dot(direction, end_direction) >= 0.0);
+  }
+  // A span over π: inside unless strictly within the missing part, which is shorter than π.
+  return !(cross(end_direction, direction) > 0.0 && cross(direction, start_direction) > 0.0);
+}
+
+Vec2 ArcFrame::nearest(Vec2 p) const noexcept {
+  const Vec2 offset = p - center;
+  if (offset != Vec2{}) {
+    const Vec2 direction = normalized(offset);
+    if (contains(direction)) return center + direction * radius;
+  }
+  return length_squared(p - start_point) <= length_squared(p - end_point) ? start_point
+                                                                            : end_point;
+}
+
+ArcFrame make_arc_frame(const char* function, const Arc& arc) {
+  require_finite(function, "arc.center", arc.center);
+  require_positive(function, "arc.radius", arc.radius);
+  require_finite(function, "arc.start_angle", arc.start_angle);
+  require_finite(function, "arc.end_angle", arc.end_angle);
+  const double span = arc.end_angle - arc.start_angle;
+  require_in_range(function, "arc.end_angle - arc.start_angle", span, 0.0, 2.0 * std::numbers::pi,
+                   "the span must lie in [0, 2*pi]");
+  ArcFrame frame;
+  frame.center = arc.center;
+  frame.radius = arc.radius;
+  frame.span = span;
+  frame.start_direction = {std::cos(arc.start_angle), std::sin(arc.start_angle)};
+  frame.end_direction = {std::cos(arc.end_angle), std::sin(arc.end_angle)};
+  frame.start_point = arc.center + frame.start_direction * arc.radius;
+  frame.end_point = arc.center + frame.end_direction * arc.radius;
+  return frame;
+}
+
+}  // namespace carom::detail

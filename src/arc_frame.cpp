@@ -26,8 +26,7 @@ Vec2 ArcFrame::nearest(Vec2 p) const noexcept {
     const Vec2 direction = normalized(offset);
     if (contains(direction)) return center + direction * radius;
   }
-  return length_squared(p - start_point) <= length_squared(p - end_point) ? start_point
-                                                                            : end_point;
+  return length_squared(p - start_point) <= length_squared(p - end_point) ? start_point : end_point;
 }
 
 ArcFrame make_arc_frame(const char* function, const Arc& arc) {

@@ -108,8 +108,8 @@ Vec2 nearest_on_segment(const Segment& segment, Vec2 p) {
 // outside, or the circle of radius |arc − ball| from inside (or, for a ball larger than the
 // arc's radius, enters it from the far side of the arc's centre), with the touched point within
 // the arc's span.
-void contact_with_arc_interior(const Ball& ball, Vec2 velocity, const ArcFrame& arc,
-                               double horizon, Candidate& best) {
+void contact_with_arc_interior(const Ball& ball, Vec2 velocity, const ArcFrame& arc, double horizon,
+                               Candidate& best) {
   const Vec2 s = ball.center - arc.center;
   auto consider = [&](detail::Crossing crossing, double side) {
     if (!crossing.found) return;
@@ -150,8 +150,8 @@ Impact finish_static(const Ball& ball, Vec2 velocity, Vec2 nearest, const Candid
   return out;
 }
 
-Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball& b,
-                 Vec2 velocity_b, double horizon) {
+Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball& b, Vec2 velocity_b,
+                 double horizon) {
   validate_moving_ball(names, a, velocity_a, horizon);
   detail::require_finite(names.function, "b.center", b.center);
   detail::require_positive(names.function, "b.radius", b.radius);
@@ -163,8 +163,8 @@ Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball&
   const double reach = a.radius + b.radius;
   // Coincident centres have no line of centres and no side to separate to: any relative
   // motion deepens the overlap, so it counts as approaching.
-  const detail::Crossing crossing = s == Vec2{} ? detail::Crossing{u != Vec2{}, 0.0}
-                                                : entry_crossing(s, u, reach, horizon);
+  const detail::Crossing crossing =
+      s == Vec2{} ? detail::Crossing{u != Vec2{}, 0.0} : entry_crossing(s, u, reach, horizon);
 
   Impact out;
   out.overlapping = length_squared(s) < reach * reach;
@@ -178,8 +178,7 @@ Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball&
   return out;
 }
 
-Impact ball_point(const Names& names, const Ball& a, Vec2 velocity_a, Vec2 point,
-                  double horizon) {
+Impact ball_point(const Names& names, const Ball& a, Vec2 velocity_a, Vec2 point, double horizon) {
   validate_moving_ball(names, a, velocity_a, horizon);
   detail::require_finite(names.function, "point", point);
   Candidate best;

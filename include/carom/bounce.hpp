@@ -39,8 +39,8 @@ struct BounceResult {
                                              Vec2 line_of_centres);
 
 struct WallBounceResult {
-  Vec2 velocity;          // the ball's velocity after the bounce
-  double impulse = 0.0;   // magnitude (>= 0); the ball receives −impulse·normal
+  Vec2 velocity;         // the ball's velocity after the bounce
+  double impulse = 0.0;  // magnitude (>= 0); the ball receives −impulse·normal
 };
 
 // A ball of the given mass (> 0, finite) against a static segment, point or arc, normal pointing

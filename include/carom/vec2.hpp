@@ -84,6 +84,8 @@ struct Components {
   return {project_onto(v, axis), project_onto_normal(v, axis)};
 }
 
-[[nodiscard]] inline bool is_finite(Vec2 a) noexcept { return std::isfinite(a.x) && std::isfinite(a.y); }
+[[nodiscard]] inline bool is_finite(Vec2 a) noexcept {
+  return std::isfinite(a.x) && std::isfinite(a.y);
+}
 
 }  // namespace carom

@@ -1,0 +1,134 @@
+// A ball against a wall: the segment's interior from either side, its end points (corners),
+// and the edges of that contact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "carom/sweep.hpp"
+
+namespace carom {
+namespace {
+
+const Segment kFloor{{-5.0, 0.0}, {5.0, 0.0}};
+
+TEST(SweepBallSegment, HitsInteriorFromAbove) {
+  const Impact impact = sweep_ball_segment({{1.0, 3.0}, 1.0}, {0.0, -4.0}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_FALSE(impact.overlapping);
+  EXPECT_EQ(impact.t, 0.5);
+  EXPECT_EQ(impact.a_at, (Vec2{1.0, 1.0}));
+  EXPECT_EQ(impact.point, (Vec2{1.0, 0.0}));
+  EXPECT_EQ(impact.b_at, impact.point);
+  EXPECT_EQ(impact.normal, (Vec2{0.0, -1.0}));  // from the ball towards the wall
+}
+
+TEST(SweepBallSegment, HitsInteriorFromBelow) {
+  const Impact impact = sweep_ball_segment({{-2.0, -3.0}, 1.0}, {2.0, 4.0}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_EQ(impact.t, 0.5);
+  EXPECT_EQ(impact.normal, (Vec2{0.0, 1.0}));
+  EXPECT_EQ(impact.point, (Vec2{-1.0, 0.0}));
+}
+
+TEST(SweepBallSegment, SlantedWall) {
+  // The line x + y = 0 through (−5, 5) and (5, −5); ball at (3, 3), distance 3√2, radius √2,
+  // moving by (−2, −2) per step: it closes at 2√2 per step and touches after 2√2: t = 1.
+  const Segment slanted{{-5.0, 5.0}, {5.0, -5.0}};
+  const Impact impact = sweep_ball_segment({{3.0, 3.0}, std::sqrt(2.0)}, {-2.0, -2.0}, slanted);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_NEAR(impact.t, 1.0, 1e-15);
+  EXPECT_NEAR(impact.point.x, 0.0, 1e-15);
+  EXPECT_NEAR(impact.normal.x, -std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(impact.normal.y, -std::sqrt(0.5), 1e-15);
+}
+
+TEST(SweepBallSegment, HitsEndPointLikeACorner) {
+  // Ball passes beside the segment's end: its path stays 0.6 away from the end point's line of
+  // motion, so it meets the end point (5, 0) when |(x − 5, 0.6)| = 1, x = 5 − 0.8.
+  const Impact impact =
+      sweep_ball_segment({{0.0, 0.6}, 1.0}, {10.0, 0.0}, Segment{{5.0, -5.0}, {5.0, 0.0}});
+  ASSERT_TRUE(impact.hit);
+  EXPECT_NEAR(impact.t, 0.42, 1e-15);
+  EXPECT_EQ(impact.point, (Vec2{5.0, 0.0}));
+  EXPECT_NEAR(impact.normal.x, 0.8, 1e-15);
+  EXPECT_NEAR(impact.normal.y, -0.6, 1e-15);
+}
+
+TEST(SweepBallSegment, HeadOnIntoTheEndPoint) {
+  const Impact impact = sweep_ball_segment({{-10.0, 0.0}, 1.0}, {8.0, 0.0}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_EQ(impact.t, 0.5);
+  EXPECT_EQ(impact.point, (Vec2{-5.0, 0.0}));
+  EXPECT_EQ(impact.normal, (Vec2{1.0, 0.0}));
+}
+
+TEST(SweepBallSegment, PassesBeyondTheEndIsNoHit) {
+  const Impact impact = sweep_ball_segment({{7.0, 3.0}, 1.0}, {0.0, -6.0}, kFloor);
+  EXPECT_FALSE(impact.hit);  // 2 beyond the end, radius 1
+}
+
+TEST(SweepBallSegment, RollingAlongTheWallIsNoHit) {
+  const Impact impact = sweep_ball_segment({{-3.0, 1.0}, 1.0}, {6.0, 0.0}, kFloor);
+  EXPECT_FALSE(impact.hit);
+  EXPECT_FALSE(impact.overlapping);
+}
+
+TEST(SweepBallSegment, TouchingAndLeavingIsNoHit) {
+  const Impact impact = sweep_ball_segment({{0.0, 1.0}, 1.0}, {1.0, 1.0}, kFloor);
+  EXPECT_FALSE(impact.hit);
+  EXPECT_FALSE(impact.overlapping);
+}
+
+TEST(SweepBallSegment, TouchingAndPressingHitsAtZero) {
+  const Impact impact = sweep_ball_segment({{0.0, 1.0}, 1.0}, {1.0, -1.0}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_FALSE(impact.overlapping);
+  EXPECT_EQ(impact.t, 0.0);
+  EXPECT_EQ(impact.normal, (Vec2{0.0, -1.0}));
+}
+
+TEST(SweepBallSegment, OverlappingAndApproachingHitsAtZeroFlagged) {
+  const Impact impact = sweep_ball_segment({{0.0, 0.5}, 1.0}, {0.0, -1.0}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_TRUE(impact.overlapping);
+  EXPECT_EQ(impact.t, 0.0);
+  EXPECT_EQ(impact.point, (Vec2{0.0, 0.0}));
+}
+
+TEST(SweepBallSegment, OverlappingAndSeparatingIsReportedButNoHit) {
+  const Impact impact = sweep_ball_segment({{0.0, 0.5}, 1.0}, {0.0, 1.0}, kFloor);
+  EXPECT_FALSE(impact.hit);
+  EXPECT_TRUE(impact.overlapping);
+  EXPECT_EQ(impact.normal, (Vec2{0.0, -1.0}));
+}
+
+TEST(SweepBallSegment, ZeroLengthSegmentIsAPoint) {
+  const Segment dot_like{{0.0, 3.0}, {0.0, 3.0}};
+  const Impact impact = sweep_ball_segment({{0.0, 0.0}, 1.0}, {0.0, 4.0}, dot_like);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_EQ(impact.t, 0.5);
+  EXPECT_EQ(impact.point, (Vec2{0.0, 3.0}));
+}
+
+TEST(SweepBallSegment, FastBallDoesNotTunnelThroughThinWall) {
+  const Impact impact = sweep_ball_segment({{0.0, -1e6}, 1e-3}, {1e-3, 2e6}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_NEAR(impact.t, 0.5 - 0.5e-9, 1e-15);
+}
+
+TEST(SweepBallSegment, EarliestOfInteriorAndEndPoint) {
+  // Moving diagonally towards the floor near its end: the interior is reached first.
+  const Impact impact = sweep_ball_segment({{4.0, 2.0}, 1.0}, {2.0, -2.0}, kFloor);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_EQ(impact.t, 0.5);
+  EXPECT_EQ(impact.point, (Vec2{5.0, 0.0}));  // exactly at the end: both candidates agree
+}
+
+TEST(TimeOfImpactBallSegment, Horizon) {
+  const Ball ball{{0.0, 5.0}, 1.0};
+  EXPECT_EQ(time_of_impact_ball_segment(ball, {0.0, -2.0}, kFloor, 10.0).t, 2.0);
+  EXPECT_FALSE(time_of_impact_ball_segment(ball, {0.0, -2.0}, kFloor, 1.5).hit);
+}
+
+}  // namespace
+}  // namespace carom

@@ -1,17 +1,43 @@
 // The batch form of sweep_ball_ball: the same arithmetic as detail::entry_crossing, written
-// without branches so that the loop vectorises. Derivation: docs/derivation.md.
+// without branches so that the loop vectorises (SSE2 in the portable build, AVX2 or AVX-512
+// with CAROM_NATIVE). Derivation: docs/derivation.md. Measurements: docs/performance.md.
 #include "carom/sweep_batch.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
-#include <stdexcept>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "validate.hpp"
+
+// A portable build still runs the widest vectors the machine has: the compiler emits the loop
+// once per instruction set listed and the loader picks the best the CPU supports (an ELF ifunc).
+// The answers do not depend on the pick: with FMA contraction off (cmake/CaromOptions.cmake)
+// each lane does the same correctly rounded operations at every width. A -march=native build
+// needs no clones.
+#if defined(__x86_64__) && defined(__ELF__) && !defined(__AVX2__) && !defined(CAROM_NO_CLONES)
+#define CAROM_VECTOR_CLONES __attribute__((target_clones("default", "avx2", "avx512f")))
+#else
+#define CAROM_VECTOR_CLONES
+#endif
 
 namespace carom {
 namespace {
 
 constexpr const char* kFunction = "sweep_ball_ball_batch";
+
+// The step form's horizon: t is a fraction of the step, as in sweep_ball_ball.
+constexpr double kStepEnd = 1.0;
+// Any value beyond kStepEnd: subtracting it makes every hit's t negative and leaves kNoHit
+// positive, so counting hits is counting sign bits.
+constexpr double kPastStepEnd = 2.0 * kStepEnd;
+// Pairs per block: the hits of a block are counted right after it is swept, while its t
+// (4 KiB) is still in the L1 cache, so counting adds no memory traffic.
+constexpr std::size_t kBlockPairs = 512;
+// Moves the sign bit of a 64-bit pattern to bit 0.
+constexpr int kSignShift = std::numeric_limits<std::uint64_t>::digits - 1;
 
 struct NamedArray {
   const char* name;
@@ -19,8 +45,10 @@ struct NamedArray {
   bool radius;  // must be > 0, not only finite
 };
 
-// Finds the first bad value and throws; called only after the fast check saw one.
-[[noreturn]] void report_bad_value(const BallPairArrays& p) {
+// Throws for the first bad value (pairs in order, then arrays in order). Called only when the
+// fast check in the loop saw a possible one; returns if there is none after all (the fast check
+// also fires for finite values so large that the discriminant overflows, near 1e308).
+void throw_first_bad_value(const BallPairArrays& p) {
   const NamedArray arrays[] = {
       {"pairs.a_x", p.a_x, false},           {"pairs.a_y", p.a_y, false},
       {"pairs.a_radius", p.a_radius, true},  {"pairs.a_move_x", p.a_move_x, false},
@@ -30,15 +58,18 @@ struct NamedArray {
   };
   for (std::size_t i = 0; i < p.a_x.size(); ++i) {
     for (const NamedArray& array : arrays) {
+      const double value = array.values[i];
+      const bool bad =
+          array.radius ? !(std::isfinite(value) && value > 0.0) : !std::isfinite(value);
+      if (!bad) continue;
       const std::string name = std::string(array.name) + "[" + std::to_string(i) + "]";
       if (array.radius) {
-        detail::require_positive(kFunction, name.c_str(), array.values[i]);
+        detail::require_positive(kFunction, name.c_str(), value);
       } else {
-        detail::require_finite(kFunction, name.c_str(), array.values[i]);
+        detail::require_finite(kFunction, name.c_str(), value);
       }
     }
   }
-  throw std::logic_error("carom::sweep_ball_ball_batch: bad value reported but not found");
 }
 
 void check_sizes(const BallPairArrays& p, std::span<double> t) {
@@ -59,52 +90,121 @@ void check_sizes(const BallPairArrays& p, std::span<double> t) {
   }
 }
 
+// Flags and counts travel as the bits of doubles, not as bools: on the x86-64 baseline (SSE2)
+// the vectoriser cannot widen a comparison of doubles to a 64-bit integer, and a bool summed
+// per pair makes gcc branch. Integer and, or, shift and subtract vectorise everywhere.
+[[nodiscard]] std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+// The sign bit is set when x is infinite or NaN: x − x is +0 for a finite x and NaN otherwise,
+// and a NaN has every exponent bit set, the highest of which the shift moves into the sign.
+[[nodiscard]] std::uint64_t not_finite_flag(double x) { return bits(x - x) << 1; }
+
+// The sign bit is set when radius is <= 0 (either zero, or negative) or a NaN with the sign
+// set. A positive radius has a clear sign bit and nonzero bits, so subtracting 1 keeps the sign
+// clear; +0 has all bits zero, and subtracting 1 sets them all. +inf and the other NaNs pass
+// here and are caught by not_finite_flag.
+[[nodiscard]] std::uint64_t not_positive_flag(double radius) {
+  return bits(radius) | (bits(radius) - 1u);
+}
+
+struct PairColumns {
+  const double* a_x;
+  const double* a_y;
+  const double* a_r;
+  const double* a_mx;
+  const double* a_my;
+  const double* b_x;
+  const double* b_y;
+  const double* b_r;
+  const double* b_mx;
+  const double* b_my;
+};
+
+// Writes t for pairs [begin, end) and returns the OR of their bad-value flags: the sign bit is
+// set if any input is NaN, infinite, or a radius <= 0 (and for finite inputs so large that the
+// discriminant overflows).
+//
+// The loop body has no branch, so that it vectorises: every lane computes the square root and
+// the quotient, and selects discard the lanes where they mean nothing. gcc's default
+// -ftrapping-math forbids it to compute a floating-point operation that the source computes
+// only conditionally, so every operation here is needed by the first select's condition and
+// the comparisons a condition needs later are the quiet ones (std::isless and kin give the same
+// answers as < and its kin, NaN included, but raise no flag on NaN, so they may be hoisted).
+// t may alias an input array exactly: each pair's inputs are read before its t is written.
+CAROM_VECTOR_CLONES std::uint64_t sweep_range(const PairColumns& in, double* out, std::size_t begin,
+                                              std::size_t end) {
+  std::uint64_t bad = 0;
+  // clang needs the hint to accept the run-time overlap checks of eleven arrays (its default
+  // allows eight); gcc versions the loop on its own.
+#if defined(__clang__)
+#pragma clang loop vectorize(enable)
+#endif
+  for (std::size_t i = begin; i < end; ++i) {
+    const double ax = in.a_x[i], ay = in.a_y[i], ar = in.a_r[i];
+    const double amx = in.a_mx[i], amy = in.a_my[i];
+    const double bx = in.b_x[i], by = in.b_y[i], br = in.b_r[i];
+    const double bmx = in.b_mx[i], bmy = in.b_my[i];
+
+    // Relative motion, as in sweep_ball_ball: A moves by u against a still B.
+    const double sx = ax - bx;
+    const double sy = ay - by;
+    const double ux = amx - bmx;
+    const double uy = amy - bmy;
+    const double reach = ar + br;
+    // detail::entry_crossing's arithmetic, operation for operation, so t is bit-identical.
+    const double b = sx * ux + sy * uy;
+    const double c = (sx * sx + sy * sy) - reach * reach;
+    const double h = sx * uy - sy * ux;
+    const double discriminant = (ux * ux + uy * uy) * (reach * reach) - h * h;
+    const double entry = c / (std::sqrt(discriminant) - b);  // NaN where discriminant < 0
+
+    const bool approaching = std::isless(b, 0.0);
+    const bool outside = std::isgreater(c, 0.0);
+    const bool inside_or_touching = std::islessequal(c, 0.0);  // not !outside: c may be NaN
+    const bool crosses = std::isgreater(discriminant, 0.0);
+    const bool within_step = std::islessequal(entry, kStepEnd);
+    const bool contact_later = approaching & outside & crosses & within_step;
+    // Coincident centres with any relative motion count as approaching, at t = 0 (as in
+    // sweep_ball_ball); for other centres b < 0 means approaching.
+    const bool coincident_moving = (sx == 0.0) & (sy == 0.0) & ((ux != 0.0) | (uy != 0.0));
+    const bool contact_now = coincident_moving | (approaching & inside_or_touching);
+    // The two contacts exclude each other: contact_later needs c > 0 and b < 0, which
+    // coincident centres never have.
+    out[i] = contact_later ? entry : (contact_now ? 0.0 : kNoHit);
+
+    // The fast check: the discriminant takes in every input (through s, u and reach), and an
+    // infinity or NaN in any input makes it infinite or NaN; an infinite s, u or reach makes
+    // a·reach² or h² infinite, or a product of infinity and zero NaN.
+    bad |= not_finite_flag(discriminant) | not_positive_flag(ar) | not_positive_flag(br);
+  }
+  return bad;
+}
+
+// t is in [0, kStepEnd] for a hit and kNoHit (+infinity) otherwise.
+std::size_t count_hits(const double* t, std::size_t begin, std::size_t end) {
+  std::size_t hits = 0;
+  for (std::size_t i = begin; i < end; ++i) hits += bits(t[i] - kPastStepEnd) >> kSignShift;
+  return hits;
+}
+
 }  // namespace
 
 std::size_t sweep_ball_ball_batch(const BallPairArrays& pairs, std::span<double> t) {
   check_sizes(pairs, t);
-  const std::size_t n = pairs.a_x.size();
-  const double* a_x = pairs.a_x.data();
-  const double* a_y = pairs.a_y.data();
-  const double* a_r = pairs.a_radius.data();
-  const double* a_mx = pairs.a_move_x.data();
-  const double* a_my = pairs.a_move_y.data();
-  const double* b_x = pairs.b_x.data();
-  const double* b_y = pairs.b_y.data();
-  const double* b_r = pairs.b_radius.data();
-  const double* b_mx = pairs.b_move_x.data();
-  const double* b_my = pairs.b_move_y.data();
-  double* out = t.data();
-
+  const PairColumns columns{
+      pairs.a_x.data(),      pairs.a_y.data(),      pairs.a_radius.data(), pairs.a_move_x.data(),
+      pairs.a_move_y.data(), pairs.b_x.data(),      pairs.b_y.data(),      pairs.b_radius.data(),
+      pairs.b_move_x.data(), pairs.b_move_y.data(),
+  };
+  const std::size_t n = t.size();
+  std::uint64_t bad = 0;
   std::size_t hits = 0;
-  bool all_valid = true;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double sx = a_x[i] - b_x[i];
-    const double sy = a_y[i] - b_y[i];
-    const double ux = a_mx[i] - b_mx[i];
-    const double uy = a_my[i] - b_my[i];
-    const double reach = a_r[i] + b_r[i];
-    const double b = sx * ux + sy * uy;
-    const double c = (sx * sx + sy * sy) - reach * reach;
-    const double a = ux * ux + uy * uy;
-    const double h = sx * uy - sy * ux;
-    const double discriminant = a * (reach * reach) - h * h;
-    const double root = std::sqrt(discriminant > 0.0 ? discriminant : 0.0);
-    const double entry = c / (root - b);
-    // Coincident centres moving apart still count as approaching (as in sweep_ball_ball).
-    const bool coincident = sx == 0.0 && sy == 0.0 && a > 0.0;
-    const bool overlapping_approach = (b < 0.0 || coincident) && c <= 0.0;
-    const bool later_hit = b < 0.0 && c > 0.0 && discriminant > 0.0 && entry <= 1.0;
-    out[i] = overlapping_approach ? 0.0 : (later_hit ? entry : kNoHit);
-    hits += (overlapping_approach || later_hit) ? 1u : 0u;
-    // x·0 is 0 for every finite x and NaN for NaN or infinity, so one NaN anywhere makes the
-    // probe NaN (a plain sum could overflow for finite values). A radius <= 0 fails below.
-    const double probe = a_x[i] * 0.0 + a_y[i] * 0.0 + a_mx[i] * 0.0 + a_my[i] * 0.0 +
-                         b_x[i] * 0.0 + b_y[i] * 0.0 + b_mx[i] * 0.0 + b_my[i] * 0.0 +
-                         a_r[i] * 0.0 + b_r[i] * 0.0;
-    all_valid &= (probe == 0.0) & (a_r[i] > 0.0) & (b_r[i] > 0.0);
+  for (std::size_t begin = 0; begin < n; begin += kBlockPairs) {
+    const std::size_t end = std::min(n, begin + kBlockPairs);
+    bad |= sweep_range(columns, t.data(), begin, end);
+    hits += count_hits(t.data(), begin, end);
   }
-  if (!all_valid) report_bad_value(pairs);
+  if (bad >> kSignShift != 0) throw_first_bad_value(pairs);
   return hits;
 }
 

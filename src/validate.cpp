@@ -18,7 +18,15 @@ std::string to_text(double value) {
   return {buffer, result.ptr};
 }
 
-std::string to_text(Vec2 value) { return "(" + to_text(value.x) + ", " + to_text(value.y) + ")"; }
+std::string to_text(Vec2 value) {
+  // Appended piece by piece: g++ 12 at -O3 warns falsely (-Wrestrict) on "(" + std::string.
+  std::string text = "(";
+  text += to_text(value.x);
+  text += ", ";
+  text += to_text(value.y);
+  text += ")";
+  return text;
+}
 
 [[noreturn]] void fail(const char* function, const char* argument, std::string value,
                        const char* requirement) {

@@ -1,0 +1,33 @@
+#include "option_value.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+#include "usage_error.hpp"
+
+namespace carom::cli {
+
+void reject(const OptionValue& value, std::string_view problem) {
+  std::string message(problem);
+  message += " (expected ";
+  message += value.expected;
+  message += ")";
+  throw UsageError(std::string(value.option), std::string(value.text), std::move(message));
+}
+
+double parse_finite_number(std::string_view item, const OptionValue& value) {
+  const std::string quoted = "\"" + std::string(item) + "\"";
+  if (item.empty()) reject(value, "a number is missing");
+  double number = 0.0;
+  const char* const end = item.data() + item.size();
+  const auto [stop, error] = std::from_chars(item.data(), end, number);
+  if (error == std::errc::result_out_of_range) {
+    reject(value, quoted + " is beyond the range of a double");
+  }
+  if (error != std::errc{} || stop != end) reject(value, quoted + " is not a number");
+  if (!std::isfinite(number)) reject(value, quoted + " is not a finite number");
+  return number;
+}
+
+}  // namespace carom::cli

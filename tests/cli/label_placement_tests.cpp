@@ -1,0 +1,66 @@
+// Where label text goes and what it covers.
+#include <gtest/gtest.h>
+
+#include "label_placement.hpp"
+
+namespace carom::cli {
+namespace {
+
+const TextBox kBox{{0, 0}, {10, 5}};
+
+TEST(Obstacles, SegmentsCountWhenTheyCrossOrLieInTheBox) {
+  Obstacles crossing;
+  crossing.add_segment({-5, 2}, {15, 3});
+  EXPECT_EQ(crossing.collisions(kBox), 1);
+
+  Obstacles inside;
+  inside.add_segment({2, 2}, {3, 3});
+  EXPECT_EQ(inside.collisions(kBox), 1);
+
+  Obstacles beside;
+  beside.add_segment({-5, -1}, {15, -1});  // parallel, just above
+  beside.add_segment({11, -10}, {20, 10});
+  EXPECT_EQ(beside.collisions(kBox), 0);
+}
+
+TEST(Obstacles, OnlyACirclesOutlineCounts) {
+  Obstacles around;
+  around.add_circle({5, 2.5}, 100);  // the box lies inside: free
+  EXPECT_EQ(around.collisions(kBox), 0);
+
+  Obstacles through;
+  through.add_circle({0, 0}, 3);
+  EXPECT_EQ(through.collisions(kBox), 1);
+
+  Obstacles away;
+  away.add_circle({50, 50}, 3);
+  EXPECT_EQ(away.collisions(kBox), 0);
+}
+
+TEST(Obstacles, EarlierLabelsCount) {
+  Obstacles labels;
+  labels.add_box({{9, 4}, {20, 8}});
+  EXPECT_EQ(labels.collisions(kBox), 1);
+}
+
+TEST(PlaceText, SitsOnTheSideItIsSentTo) {
+  const PlacedText right = place_text({100, 100}, {1, 0}, "va");
+  EXPECT_EQ(right.anchor, TextAnchor::kStart);
+  EXPECT_GT(right.box.min.x, 100.0);
+
+  const PlacedText left = place_text({100, 100}, {-1, 0}, "va");
+  EXPECT_EQ(left.anchor, TextAnchor::kEnd);
+  EXPECT_LT(left.box.max.x, 100.0);
+
+  const PlacedText above = place_text({100, 100}, {0, -1}, "va");  // screen y points down
+  EXPECT_EQ(above.anchor, TextAnchor::kMiddle);
+  EXPECT_LT(above.box.max.y, 100.0);
+}
+
+TEST(CountCharacters, CountsLettersNotBytes) {
+  EXPECT_EQ(count_characters("va′"), 3u);
+  EXPECT_EQ(count_characters("va − vb"), 7u);
+}
+
+}  // namespace
+}  // namespace carom::cli

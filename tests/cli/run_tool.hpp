@@ -1,0 +1,41 @@
+// carom CLI tests: running the built `carom` binary as a user would, and scratch folders for the
+// files it writes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace carom::cli::test {
+
+struct ToolRun {
+  int exit_code = -1;  // the status the tool exited with; -1 if it did not exit normally
+  std::string out;     // everything it printed on stdout
+  std::string err;     // everything it printed on stderr
+};
+
+// Runs the tool (CAROM_CLI_PATH) with args and waits for it. Its output goes through files, so
+// neither stream can block the other however much is written.
+[[nodiscard]] ToolRun run_carom(const std::vector<std::string>& args);
+
+// A fresh, empty folder for one test, removed with everything in it when the test ends.
+class ScratchDir {
+ public:
+  ScratchDir();
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  [[nodiscard]] std::filesystem::path operator/(const std::string& name) const {
+    return path_ / name;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The whole content of a file ("" if it cannot be read).
+[[nodiscard]] std::string read_file(const std::filesystem::path& path);
+
+}  // namespace carom::cli::test

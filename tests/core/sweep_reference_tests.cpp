@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <functional>
 
 #include "carom/sweep.hpp"
 #include "random_cases.hpp"
@@ -25,95 +27,82 @@ constexpr double kClearDepth = 1e-6;
 // a clear hit's slope is at least ~1e-4 here, so 1e-9 holds with a wide margin.
 constexpr double kTimeTol = 1e-9;
 
-struct Tally {
-  int compared = 0;
-  int library_only = 0;
+// One random case: the library's answer and the reference surface distance gap(t).
+struct Case {
+  Impact library;
+  GapFunction gap;
 };
 
-// One case: `library` is the library's answer; gap(t) the reference surface distance.
-void compare(const Impact& library, const GapFunction& gap, int index, Tally& tally) {
-  const auto reference = testing::first_contact(gap, 1.0, kSamples, kBisectionTol);
-  if (reference && reference->deepest_gap < -kClearDepth) {
-    ASSERT_TRUE(library.hit) << "case " << index << ": reference hits at t = " << reference->t;
-    ASSERT_NEAR(library.t, reference->t, kTimeTol) << "case " << index;
-    ++tally.compared;
-  } else if (library.hit) {
-    // A contact the sampling did not see clearly: it must still be a real touch.
-    ASSERT_NEAR(gap(library.t), 0.0, 1e-9) << "case " << index;
-    ++tally.library_only;
+// Compares the library with the reference on kCases random cases from `make` (cases that start
+// in contact are left to the edge tests), and checks that at least min_compared were clear hits.
+void compare_random_cases(std::uint64_t seed, int min_compared,
+                          const std::function<Case(RandomCases&)>& make) {
+  RandomCases random(seed);
+  int compared = 0;
+  for (int i = 0; i < kCases; ++i) {
+    const Case c = make(random);
+    if (c.gap(0.0) <= 0.0) continue;
+    const auto reference = testing::first_contact(c.gap, 1.0, kSamples, kBisectionTol);
+    if (reference && reference->deepest_gap < -kClearDepth) {
+      ASSERT_TRUE(c.library.hit) << "case " << i << ": reference hits at t = " << reference->t;
+      ASSERT_NEAR(c.library.t, reference->t, kTimeTol) << "case " << i;
+      ++compared;
+    } else if (c.library.hit) {
+      // A contact the sampling did not see clearly: it must still be a real touch.
+      ASSERT_NEAR(c.gap(c.library.t), 0.0, 1e-9) << "case " << i;
+    }
   }
+  EXPECT_GT(compared, min_compared);
 }
 
 TEST(SweepReference, BallBall) {
-  RandomCases random(11);
-  Tally tally;
-  for (int i = 0; i < kCases; ++i) {
+  compare_random_cases(11, kCases / 8, [](RandomCases& random) {
     const Ball a = random.ball(10.0);
     const Ball b = random.ball(10.0);
     const Vec2 move_a = random.move_towards(a.center, b.center, 4.0);
     const Vec2 move_b = random.point(6.0);
-    const GapFunction gap = [&](double t) {
-      return distance(a.center + move_a * t, b.center + move_b * t) - a.radius - b.radius;
-    };
-    if (gap(0.0) <= 0.0) continue;
-    compare(sweep_ball_ball(a, move_a, b, move_b), gap, i, tally);
-    if (HasFatalFailure()) return;
-  }
-  EXPECT_GT(tally.compared, kCases / 8);
+    return Case{sweep_ball_ball(a, move_a, b, move_b), [=](double t) {
+                  return distance(a.center + move_a * t, b.center + move_b * t) - a.radius -
+                         b.radius;
+                }};
+  });
 }
 
 TEST(SweepReference, BallSegment) {
-  RandomCases random(12);
-  Tally tally;
-  for (int i = 0; i < kCases; ++i) {
+  compare_random_cases(12, kCases / 20, [](RandomCases& random) {
     const Segment segment = random.segment(8.0);
     const Ball ball = random.ball(10.0);
     const Vec2 move = random.move_towards(ball.center, random.point(6.0), 4.0);
-    const GapFunction gap = [&](double t) {
-      return testing::distance_to_segment(ball.center + move * t, segment) - ball.radius;
-    };
-    if (gap(0.0) <= 0.0) continue;
-    compare(sweep_ball_segment(ball, move, segment), gap, i, tally);
-    if (HasFatalFailure()) return;
-  }
-  EXPECT_GT(tally.compared, kCases / 20);
+    return Case{sweep_ball_segment(ball, move, segment), [=](double t) {
+                  return testing::distance_to_segment(ball.center + move * t, segment) -
+                         ball.radius;
+                }};
+  });
 }
 
 TEST(SweepReference, BallArc) {
-  RandomCases random(13);
-  Tally tally;
-  for (int i = 0; i < kCases; ++i) {
+  compare_random_cases(13, kCases / 20, [](RandomCases& random) {
     const Arc arc = random.arc(6.0);
     const Ball ball = random.ball(10.0);
     const Vec2 move = random.move_towards(ball.center, random.point(6.0), 4.0);
-    const GapFunction gap = [&](double t) {
-      return testing::distance_to_arc(ball.center + move * t, arc) - ball.radius;
-    };
-    if (gap(0.0) <= 0.0) continue;
-    compare(sweep_ball_arc(ball, move, arc), gap, i, tally);
-    if (HasFatalFailure()) return;
-  }
-  EXPECT_GT(tally.compared, kCases / 20);
+    return Case{sweep_ball_arc(ball, move, arc), [=](double t) {
+                  return testing::distance_to_arc(ball.center + move * t, arc) - ball.radius;
+                }};
+  });
 }
 
 TEST(SweepReference, BallInsideArcBowls) {
   // Balls starting inside the arc's circle exercise the inner face and the gap.
-  RandomCases random(14);
-  Tally tally;
-  for (int i = 0; i < kCases; ++i) {
+  compare_random_cases(14, kCases / 20, [](RandomCases& random) {
     Arc arc = random.arc(2.0);
     arc.radius = random.uniform(3.0, 8.0);
     const double ball_radius = random.uniform(0.1, 0.9) * arc.radius;
     const Ball ball{arc.center + random.point(arc.radius * 0.5), ball_radius};
     const Vec2 move = random.point(3.0 * arc.radius);
-    const GapFunction gap = [&](double t) {
-      return testing::distance_to_arc(ball.center + move * t, arc) - ball.radius;
-    };
-    if (gap(0.0) <= 0.0) continue;
-    compare(sweep_ball_arc(ball, move, arc), gap, i, tally);
-    if (HasFatalFailure()) return;
-  }
-  EXPECT_GT(tally.compared, kCases / 20);
+    return Case{sweep_ball_arc(ball, move, arc), [=](double t) {
+                  return testing::distance_to_arc(ball.center + move * t, arc) - ball.radius;
+                }};
+  });
 }
 
 }  // namespace

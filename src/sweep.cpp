@@ -52,8 +52,10 @@ void keep_earliest(Candidate& best, double t, Vec2 point, Vec2 normal) {
 
 // A ball touching or overlapping the shape at its nearest point and moving towards it is in
 // contact now (t = 0). Moving away from that point, it may still meet another part later.
-void contact_at_start(const Ball& ball, Vec2 velocity, Vec2 nearest, Candidate& best) {
-  const Vec2 gap = nearest - ball.center;
+// `gap` runs from the centre to the nearest point; callers that know its direction exactly (the
+// normal of a segment's interior) pass it computed from that, so that a ball sliding along a
+// wall is not seen approaching it by a rounding of the nearest point.
+void contact_at_start(const Ball& ball, Vec2 velocity, Vec2 nearest, Vec2 gap, Candidate& best) {
   const double gap_sq = length_squared(gap);
   if (gap_sq > ball.radius * ball.radius) return;
   // A centre exactly on the shape has no side to move away to: any motion deepens the contact.
@@ -102,6 +104,17 @@ Vec2 nearest_on_segment(const Segment& segment, Vec2 p) {
   if (length_sq == 0.0) return segment.a;
   const double fraction = std::clamp(dot(p - segment.a, along) / length_sq, 0.0, 1.0);
   return segment.a + along * fraction;
+}
+
+// From p to the segment's nearest point. For an interior nearest point the direction is the
+// segment's exact normal (a rounding of the nearest point would tilt it).
+Vec2 gap_to_segment(const Segment& segment, Vec2 p, Vec2 nearest) {
+  const Vec2 along = segment.b - segment.a;
+  const double length_sq = length_squared(along);
+  const double fraction = length_sq > 0.0 ? dot(p - segment.a, along) / length_sq : 0.0;
+  if (!(fraction > 0.0 && fraction < 1.0)) return nearest - p;
+  const Vec2 normal = left_normal(along) / length(along);
+  return normal * -dot(p - segment.a, normal);
 }
 
 // Contacts with the arc's interior: the centre crosses the circle of radius arc + ball from
@@ -193,7 +206,7 @@ Impact ball_segment(const Names& names, const Ball& a, Vec2 velocity_a, const Se
   detail::require_finite(names.function, "segment.b", segment.b);
   const Vec2 nearest = nearest_on_segment(segment, a.center);
   Candidate best;
-  contact_at_start(a, velocity_a, nearest, best);
+  contact_at_start(a, velocity_a, nearest, gap_to_segment(segment, a.center, nearest), best);
   if (segment.a != segment.b) contact_with_segment_side(a, velocity_a, segment, horizon, best);
   contact_with_point(a, velocity_a, segment.a, horizon, best);
   contact_with_point(a, velocity_a, segment.b, horizon, best);
@@ -206,7 +219,7 @@ Impact ball_arc(const Names& names, const Ball& a, Vec2 velocity_a, const Arc& a
   const ArcFrame frame = detail::make_arc_frame(names.function, arc);
   const Vec2 nearest = frame.nearest(a.center);
   Candidate best;
-  contact_at_start(a, velocity_a, nearest, best);
+  contact_at_start(a, velocity_a, nearest, nearest - a.center, best);
   if (frame.span > 0.0) contact_with_arc_interior(a, velocity_a, frame, horizon, best);
   contact_with_point(a, velocity_a, frame.start_point, horizon, best);
   contact_with_point(a, velocity_a, frame.end_point, horizon, best);

@@ -35,6 +35,9 @@ std::string to_text(Vec2 value) {
 
 }  // namespace
 
+std::string number_text(double value) { return to_text(value); }
+std::string vector_text(Vec2 value) { return to_text(value); }
+
 void require_finite(const char* function, const char* argument, double value) {
   if (!std::isfinite(value)) fail(function, argument, to_text(value), "must be a finite number");
 }

@@ -2,9 +2,15 @@
 // carom::InvalidArgument naming the function, the argument and the offending value.
 #pragma once
 
+#include <string>
+
 #include "carom/vec2.hpp"
 
 namespace carom::detail {
+
+// The shortest text that reads back to the same double ("nan", "inf" and "-inf" included).
+[[nodiscard]] std::string number_text(double value);
+[[nodiscard]] std::string vector_text(Vec2 value);
 
 void require_finite(const char* function, const char* argument, double value);
 void require_finite(const char* function, const char* argument, Vec2 value);

@@ -73,6 +73,19 @@ TEST(SweepBallSegment, RollingAlongTheWallIsNoHit) {
   EXPECT_FALSE(impact.overlapping);
 }
 
+TEST(SweepBallSegment, SlidingAlongTheWallIsNoHitWhereverTheNearestPointRounds) {
+  // Found by the world's "ball rolling along a wall" scene: at x = 13/3 the nearest point on
+  // the wall, a + (b − a)·fraction, rounds an ulp ahead of the centre, which looked like a
+  // 1e-15 approach. The interior's direction is now the wall's exact normal.
+  const Segment floor{{0.0, 0.0}, {10.0, 0.0}};
+  for (int i = 1; i < 1000; ++i) {
+    const double x = 10.0 * i / 1000.0 + 1.0 / 3.0;
+    const Impact impact = sweep_ball_segment({{x, 0.5}, 0.5}, {1.0, 0.0}, floor);
+    ASSERT_FALSE(impact.hit) << "x = " << x;
+    ASSERT_FALSE(impact.overlapping) << "x = " << x;
+  }
+}
+
 TEST(SweepBallSegment, TouchingAndLeavingIsNoHit) {
   const Impact impact = sweep_ball_segment({{0.0, 1.0}, 1.0}, {1.0, 1.0}, kFloor);
   EXPECT_FALSE(impact.hit);

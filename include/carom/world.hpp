@@ -1,0 +1,169 @@
+// carom: a world of moving balls, static walls and arcs, advanced in exact event order.
+//
+// Every contact inside a step is found and resolved at the time it really happens, in time order,
+// however fast the balls move: the world is event-driven (each ball moves in a straight line
+// between its contacts; see docs/world.md). What it guarantees:
+// - no missed contact: a pair that would touch while approaching is bounced at that time;
+// - no overlap beyond rounding: balls never pass through each other or through walls;
+// - determinism: the same world and the same calls give bit-identical states and contact lists;
+// - exact conservation for elastic contacts, up to the rounding of each bounce.
+// Misuse (a stale handle, a bad number, a ball placed overlapping another) throws
+// carom::InvalidArgument naming the argument and value. One world per thread: a World shares no
+// state with another, so independent worlds may be stepped on different threads at once.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "carom/bounce.hpp"
+#include "carom/shapes.hpp"
+#include "carom/vec2.hpp"
+
+namespace carom {
+
+// A handle to a ball: a slot index and the slot's generation. A removed ball's handle goes stale
+// (its slot's generation moves on) and every use of it throws. The default handle is null.
+struct BallId {
+  std::uint32_t index = 0;
+  std::uint32_t generation = 0;  // 0 only in the null handle
+
+  [[nodiscard]] constexpr bool is_null() const noexcept { return generation == 0; }
+  friend constexpr bool operator==(BallId, BallId) noexcept = default;
+};
+
+// Static geometry is never removed; a wall is named by the order it was added in (from 0).
+using WallId = std::uint32_t;
+
+enum class Boundary : std::uint8_t {
+  open,      // no boundary: balls may travel anywhere
+  box,       // four walls along [lower, upper]; no ball ever leaves
+  periodic,  // both axes wrap around [lower, upper)
+};
+
+struct WorldDef {
+  Boundary boundary = Boundary::open;
+  Vec2 lower;  // the box or the periodic cell (unused for an open world)
+  Vec2 upper;
+  double restitution = 1.0;  // for balls whose BallDef leaves it unset
+  // Inelastic collapse prevention (the "TC model"): a ball that collided less than this time ago
+  // bounces elastically, so that three or more inelastic balls cannot collide infinitely often in
+  // finite time. 0 turns it off. See docs/world.md.
+  double collapse_time = 0.0;
+  // Side of the broad-phase grid's cells; 0 chooses it (at least the largest diameter). A cell
+  // smaller than the largest diameter given here is raised to it.
+  double cell_size = 0.0;
+};
+
+struct BallDef {
+  Vec2 position;
+  Vec2 velocity;
+  double radius = 1.0;
+  double mass = 1.0;                  // > 0, or kImmovable for a ball nothing moves
+  std::optional<double> restitution;  // in [0, 1]; unset: the world's
+  std::uint64_t user_data = 0;
+};
+
+enum class ContactKind : std::uint8_t { ball_ball, ball_wall };
+
+// One resolved contact, as the game needs it for sounds, scores and logic.
+struct ContactEvent {
+  double time = 0.0;  // world time of the contact
+  ContactKind kind = ContactKind::ball_ball;
+  BallId a;                     // the ball (for two balls, the one with the lower index)
+  BallId b;                     // the other ball (ball_ball only)
+  WallId wall = 0;              // the wall (ball_wall only)
+  Vec2 point;                   // the contact point
+  Vec2 normal;                  // unit, from a towards b (or towards the wall)
+  double approach_speed = 0.0;  // normal speed at which they met (> 0)
+  double impulse = 0.0;         // magnitude of the normal impulse
+};
+
+// What set_position does when the new place would overlap a ball or a wall.
+enum class Placement : std::uint8_t {
+  refuse,        // throw carom::InvalidArgument, leaving the ball where it was
+  nearest_free,  // move it along the line from its old place towards the new one, as far as it
+                 // can go without overlap (the dragged ball stops where it first touches)
+};
+
+class World {
+ public:
+  explicit World(const WorldDef& def = {});
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // ---- balls ----
+  // Throws if the ball overlaps another ball or a wall, or lies outside a box.
+  BallId add_ball(const BallDef& def);
+  void remove_ball(BallId id);
+  [[nodiscard]] bool contains(BallId id) const noexcept;
+  // Every live ball, in slot order.
+  [[nodiscard]] std::vector<BallId> balls() const;
+
+  // ---- static geometry ----
+  WallId add_segment(const Segment& segment);
+  // Consecutive points joined by segments (and the last back to the first when closed); returns
+  // the first segment's id, the rest follow in order.
+  WallId add_polyline(std::span<const Vec2> points, bool closed = false);
+  WallId add_arc(const Arc& arc);
+  // Four segments along an axis-aligned box: lower-left to lower-right, counter-clockwise.
+  WallId add_box(Vec2 lower, Vec2 upper);
+  [[nodiscard]] std::size_t wall_count() const noexcept;
+
+  // ---- advancing time ----
+  // Advances exactly dt (>= 0), resolving every contact in time order; returns the time
+  // advanced, less than dt only when the stop condition fired.
+  double step(double dt);
+  // Advances to world time `time` (>= time()).
+  double run_until(double time);
+  // Resolves the next `count` contacts (ball–ball and ball–wall) and stops right after the last;
+  // returns how many it resolved (fewer only when no contact will ever happen or the stop
+  // condition fired).
+  std::uint64_t run_collisions(std::uint64_t count);
+
+  // Stop early: after each contact the callback is asked, and if it answers true the current
+  // step / run ends right after that contact, with every ball brought to that time.
+  void set_stop_condition(std::function<bool(const ContactEvent&)> condition);
+  [[nodiscard]] bool stopped_early() const noexcept;
+
+  // Contacts resolved by the last step / run_until / run_collisions, in the order they happened:
+  // by time, then kind (ball–ball before ball–wall), then ids.
+  [[nodiscard]] std::span<const ContactEvent> contacts() const noexcept;
+
+  // ---- queries, at the world's current time ----
+  [[nodiscard]] double time() const noexcept;
+  [[nodiscard]] Vec2 position(BallId id) const;
+  [[nodiscard]] Vec2 velocity(BallId id) const;
+  [[nodiscard]] double radius(BallId id) const;
+  [[nodiscard]] double mass(BallId id) const;
+  [[nodiscard]] std::uint64_t user_data(BallId id) const;
+  [[nodiscard]] std::size_t ball_count() const noexcept;
+  [[nodiscard]] double kinetic_energy() const noexcept;          // of movable balls
+  [[nodiscard]] Vec2 momentum() const noexcept;                  // of movable balls
+  [[nodiscard]] std::uint64_t collision_count() const noexcept;  // since creation, all kinds
+
+  // ---- changing balls between steps ----
+  void set_velocity(BallId id, Vec2 velocity);
+  // Returns where the ball ended up (see Placement).
+  Vec2 set_position(BallId id, Vec2 position, Placement placement = Placement::refuse);
+
+  // ---- checking ----
+  // Brute-force check of the invariants (no two balls or a ball and a wall overlapping by more
+  // than `tolerance` times the sum of radii, every ball inside a box); returns a description of
+  // the first violation, or nothing.
+  [[nodiscard]] std::optional<std::string> audit(double tolerance = 1e-9) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace carom

@@ -1,0 +1,92 @@
+// carom internal: the world's broad phase, a uniform grid of square cells no smaller than the
+// largest ball's diameter, so that two balls in contact are always in the same or neighbouring
+// cells. Balls are kept in intrusive doubly linked lists per cell (no allocation while running);
+// walls are listed in every cell their box, grown by the cell size, overlaps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "carom/vec2.hpp"
+
+namespace carom::detail {
+
+inline constexpr std::int32_t kNoBall = -1;
+
+class Grid {
+ public:
+  // nx × ny cells of size `cell` (width, height) from `lower`; periodic wraps both axes.
+  void setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
+             std::uint32_t ball_capacity);
+  // Makes room for balls up to index capacity − 1 (new ones in no cell).
+  void reserve_balls(std::uint32_t capacity);
+
+  [[nodiscard]] std::int32_t nx() const { return nx_; }
+  [[nodiscard]] std::int32_t ny() const { return ny_; }
+  [[nodiscard]] Vec2 cell_size() const { return cell_; }
+  [[nodiscard]] Vec2 lower() const { return lower_; }
+  [[nodiscard]] Vec2 upper() const { return lower_ + Vec2{cell_.x * nx_, cell_.y * ny_}; }
+  [[nodiscard]] bool periodic() const { return periodic_; }
+  [[nodiscard]] std::int32_t index(std::int32_t cx, std::int32_t cy) const { return cy * nx_ + cx; }
+  [[nodiscard]] std::int32_t column(std::int32_t cell) const { return cell % nx_; }
+  [[nodiscard]] std::int32_t row(std::int32_t cell) const { return cell / nx_; }
+  // The cell column/row of a coordinate, clamped to the grid.
+  [[nodiscard]] std::int32_t column_of(double x) const;
+  [[nodiscard]] std::int32_t row_of(double y) const;
+  [[nodiscard]] std::int32_t cell_of(Vec2 p) const { return index(column_of(p.x), row_of(p.y)); }
+  // The cell's lower-left corner and upper-right corner.
+  [[nodiscard]] Vec2 cell_lower(std::int32_t cell) const;
+  [[nodiscard]] Vec2 cell_upper(std::int32_t cell) const;
+
+  void insert(std::uint32_t ball, std::int32_t cell);
+  void erase(std::uint32_t ball);
+  [[nodiscard]] std::int32_t cell_of_ball(std::uint32_t ball) const { return ball_cell_[ball]; }
+  [[nodiscard]] std::int32_t first_ball(std::int32_t cell) const {
+    return head_[static_cast<std::size_t>(cell)];
+  }
+  [[nodiscard]] std::int32_t next_ball(std::uint32_t ball) const { return next_[ball]; }
+
+  void add_wall(std::uint32_t wall, Vec2 lower, Vec2 upper);
+  [[nodiscard]] const std::vector<std::uint32_t>& walls(std::int32_t cell) const {
+    return walls_[static_cast<std::size_t>(cell)];
+  }
+
+  // Calls visit(neighbour_cell) for the 3×3 block around `cell`, each cell once (wrapping in a
+  // periodic grid, clipped at the edges otherwise).
+  template <typename Visit>
+  void for_each_neighbour(std::int32_t cell, Visit&& visit) const {
+    const std::int32_t cx = column(cell);
+    const std::int32_t cy = row(cell);
+    for (std::int32_t dy = -1; dy <= 1; ++dy) {
+      std::int32_t y = cy + dy;
+      if (periodic_) {
+        y = (y + ny_) % ny_;
+      } else if (y < 0 || y >= ny_) {
+        continue;
+      }
+      for (std::int32_t dx = -1; dx <= 1; ++dx) {
+        std::int32_t x = cx + dx;
+        if (periodic_) {
+          x = (x + nx_) % nx_;
+        } else if (x < 0 || x >= nx_) {
+          continue;
+        }
+        visit(index(x, y));
+      }
+    }
+  }
+
+ private:
+  Vec2 lower_;
+  Vec2 cell_{1.0, 1.0};
+  std::int32_t nx_ = 1;
+  std::int32_t ny_ = 1;
+  bool periodic_ = false;
+  std::vector<std::int32_t> head_;                 // by cell: first ball, or kNoBall
+  std::vector<std::int32_t> next_;                 // by ball
+  std::vector<std::int32_t> prev_;                 // by ball
+  std::vector<std::int32_t> ball_cell_;            // by ball, or kNoBall
+  std::vector<std::vector<std::uint32_t>> walls_;  // by cell
+};
+
+}  // namespace carom::detail

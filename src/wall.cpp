@@ -1,0 +1,47 @@
+#include "wall.hpp"
+
+#include <algorithm>
+
+namespace carom::detail {
+
+Wall make_segment_wall(const Segment& segment) {
+  Wall wall;
+  wall.segment = segment;
+  return wall;
+}
+
+Wall make_arc_wall(const char* function, const Arc& arc) {
+  Wall wall;
+  wall.is_arc = true;
+  wall.arc = arc;
+  wall.frame = make_arc_frame(function, arc);
+  return wall;
+}
+
+Vec2 nearest_point(const Wall& wall, Vec2 p) {
+  if (wall.is_arc) return wall.frame.nearest(p);
+  const Vec2 along = wall.segment.b - wall.segment.a;
+  const double length_sq = length_squared(along);
+  if (length_sq == 0.0) return wall.segment.a;
+  const double fraction = std::clamp(dot(p - wall.segment.a, along) / length_sq, 0.0, 1.0);
+  return wall.segment.a + along * fraction;
+}
+
+Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity, double horizon) {
+  return wall.is_arc ? time_of_impact_ball_arc(ball, velocity, wall.arc, horizon)
+                     : time_of_impact_ball_segment(ball, velocity, wall.segment, horizon);
+}
+
+void bounds(const Wall& wall, Vec2& lower, Vec2& upper) {
+  if (wall.is_arc) {
+    lower = wall.arc.center - Vec2{wall.arc.radius, wall.arc.radius};
+    upper = wall.arc.center + Vec2{wall.arc.radius, wall.arc.radius};
+    return;
+  }
+  lower = {std::min(wall.segment.a.x, wall.segment.b.x),
+           std::min(wall.segment.a.y, wall.segment.b.y)};
+  upper = {std::max(wall.segment.a.x, wall.segment.b.x),
+           std::max(wall.segment.a.y, wall.segment.b.y)};
+}
+
+}  // namespace carom::detail

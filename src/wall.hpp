@@ -1,0 +1,31 @@
+// carom internal: a static wall of the world, a segment or an arc, with the few questions the
+// engine asks of it.
+#pragma once
+
+#include "arc_frame.hpp"
+#include "carom/shapes.hpp"
+#include "carom/sweep.hpp"
+
+namespace carom::detail {
+
+struct Wall {
+  bool is_arc = false;
+  Segment segment;
+  Arc arc;
+  ArcFrame frame;  // is_arc only
+};
+
+[[nodiscard]] Wall make_segment_wall(const Segment& segment);
+[[nodiscard]] Wall make_arc_wall(const char* function, const Arc& arc);
+
+// The point of the wall nearest to p.
+[[nodiscard]] Vec2 nearest_point(const Wall& wall, Vec2 p);
+
+// The first approaching contact of a ball moving with velocity within [0, horizon].
+[[nodiscard]] Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity,
+                                    double horizon);
+
+// An axis-aligned box holding the whole wall.
+void bounds(const Wall& wall, Vec2& lower, Vec2& upper);
+
+}  // namespace carom::detail

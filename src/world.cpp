@@ -1,0 +1,421 @@
+// carom::World's public surface: handles, validation, queries. The engine: world_engine.cpp.
+#include "carom/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "carom/error.hpp"
+#include "carom/sweep.hpp"
+#include "validate.hpp"
+#include "world_impl.hpp"
+
+namespace carom {
+
+using detail::BallSlot;
+
+namespace {
+
+std::string number(double value) { return detail::number_text(value); }
+
+[[noreturn]] void refuse(const char* function, const char* argument, const std::string& value,
+                         const std::string& requirement) {
+  throw InvalidArgument(function, argument, value, requirement);
+}
+
+void validate_ball_def(const char* function, const BallDef& def) {
+  detail::require_finite(function, "def.position", def.position);
+  detail::require_finite(function, "def.velocity", def.velocity);
+  detail::require_positive(function, "def.radius", def.radius);
+  detail::require_mass(function, "def.mass", def.mass);
+  if (def.restitution) detail::require_restitution(function, "def.restitution", *def.restitution);
+}
+
+}  // namespace
+
+// ---- World::Impl helpers --------------------------------------------------------------------
+
+std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
+  if (id.is_null()) refuse(function, "id", "null", "must be a ball of this world");
+  if (id.index >= balls.size() || !balls[id.index].alive ||
+      balls[id.index].generation != id.generation) {
+    refuse(function, "id",
+           "{" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}",
+           "is stale: that ball was removed (or never belonged to this world)");
+  }
+  return id.index;
+}
+
+Vec2 World::Impl::minimum_image(Vec2 d) const {
+  if (def.boundary != Boundary::periodic) return d;
+  // Differences are between positions inside the cell, so one period at most is ever needed.
+  const Vec2 size = def.upper - def.lower;
+  if (d.x > 0.5 * size.x) {
+    d.x -= size.x;
+  } else if (d.x < -0.5 * size.x) {
+    d.x += size.x;
+  }
+  if (d.y > 0.5 * size.y) {
+    d.y -= size.y;
+  } else if (d.y < -0.5 * size.y) {
+    d.y += size.y;
+  }
+  return d;
+}
+
+Vec2 World::Impl::wrap_into_cell(Vec2 p) const {
+  if (def.boundary != Boundary::periodic) return p;
+  const Vec2 size = def.upper - def.lower;
+  Vec2 q{p.x - size.x * std::floor((p.x - def.lower.x) / size.x),
+         p.y - size.y * std::floor((p.y - def.lower.y) / size.y)};
+  // Rounding can land exactly on the upper edge; the cell is half-open.
+  if (q.x >= def.upper.x) q.x = def.lower.x;
+  if (q.y >= def.upper.y) q.y = def.lower.y;
+  return q;
+}
+
+std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) const {
+  if (def.boundary == Boundary::box) {
+    if (p.x - r < def.lower.x || p.x + r > def.upper.x || p.y - r < def.lower.y ||
+        p.y + r > def.upper.y) {
+      return "it reaches outside the box";
+    }
+  }
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const Vec2 nearest = detail::nearest_point(walls[w], p);
+    if (length_squared(nearest - p) < r * r) {
+      return "it overlaps wall " + std::to_string(w);
+    }
+  }
+  if (!grid_valid) return {};
+  std::string found;
+  grid.for_each_neighbour(grid.cell_of(wrap_into_cell(p)), [&](std::int32_t cell) {
+    for (std::int32_t j = grid.first_ball(cell); j != detail::kNoBall && found.empty();
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      const auto other = static_cast<std::uint32_t>(j);
+      if (other == except) continue;
+      const Vec2 gap = minimum_image(position_at(other, time) - p);
+      const double reach = r + balls[other].radius;
+      if (length_squared(gap) < reach * reach) {
+        found = "it overlaps ball " + std::to_string(other) + " by " + number(reach - length(gap));
+      }
+    }
+  });
+  return found;
+}
+
+// ---- World -----------------------------------------------------------------------------------
+
+World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
+  constexpr const char* kFunction = "World";
+  detail::require_restitution(kFunction, "def.restitution", def.restitution);
+  detail::require_non_negative(kFunction, "def.collapse_time", def.collapse_time);
+  detail::require_non_negative(kFunction, "def.cell_size", def.cell_size);
+  if (def.boundary != Boundary::open) {
+    detail::require_finite(kFunction, "def.lower", def.lower);
+    detail::require_finite(kFunction, "def.upper", def.upper);
+    if (!(def.upper.x > def.lower.x && def.upper.y > def.lower.y)) {
+      refuse(kFunction, "def.upper", detail::vector_text(def.upper),
+             "must lie above and to the right of def.lower");
+    }
+  }
+  impl_->def = def;
+  if (def.boundary == Boundary::box) {
+    add_box(def.lower, def.upper);
+    impl_->boundary_walls = 4;
+  }
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+BallId World::add_ball(const BallDef& def) {
+  constexpr const char* kFunction = "World::add_ball";
+  validate_ball_def(kFunction, def);
+  Impl& w = *impl_;
+  const Vec2 position = w.wrap_into_cell(def.position);
+  if (w.def.boundary == Boundary::periodic) {
+    // Three cells of at least a diameter per axis keep every neighbour cell distinct.
+    const Vec2 size = w.def.upper - w.def.lower;
+    const double widest = std::min(size.x, size.y) / 3.0;
+    if (!(2.0 * def.radius < widest)) {
+      refuse(kFunction, "def.radius", number(def.radius),
+             "a periodic cell must be more than 3 diameters wide on each axis");
+    }
+  }
+  w.ensure_grid(position, def.radius);
+  const std::string overlap =
+      w.overlap_at(position, def.radius, std::numeric_limits<std::uint32_t>::max());
+  if (!overlap.empty()) {
+    refuse(kFunction, "def.position", detail::vector_text(def.position),
+           "the ball cannot go there: " + overlap);
+  }
+
+  std::uint32_t slot = 0;
+  if (!w.free_slots.empty()) {
+    slot = w.free_slots.back();
+    w.free_slots.pop_back();
+  } else {
+    slot = static_cast<std::uint32_t>(w.balls.size());
+    w.balls.emplace_back();
+    w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));
+  }
+  BallSlot& b = w.balls[slot];
+  b.position = position;
+  b.velocity = def.velocity;
+  b.local_time = w.time;
+  b.radius = def.radius;
+  b.mass = def.mass;
+  b.inverse_mass = def.mass == kImmovable ? 0.0 : 1.0 / def.mass;
+  b.restitution = def.restitution.value_or(w.def.restitution);
+  b.last_contact_time = -std::numeric_limits<double>::infinity();
+  b.user_data = def.user_data;
+  b.alive = true;
+  ++b.version;
+  ++w.live_count;
+  w.grid.insert(slot, w.grid.cell_of(position));
+  w.events_valid = false;
+  return w.id_of(slot);
+}
+
+void World::remove_ball(BallId id) {
+  Impl& w = *impl_;
+  const std::uint32_t slot = w.slot_of("World::remove_ball", id);
+  BallSlot& b = w.balls[slot];
+  w.grid.erase(slot);
+  b.alive = false;
+  ++b.version;
+  b.generation = b.generation == std::numeric_limits<std::uint32_t>::max() ? 1 : b.generation + 1;
+  w.free_slots.push_back(slot);
+  --w.live_count;
+  w.events_valid = false;
+}
+
+bool World::contains(BallId id) const noexcept {
+  const Impl& w = *impl_;
+  return !id.is_null() && id.index < w.balls.size() && w.balls[id.index].alive &&
+         w.balls[id.index].generation == id.generation;
+}
+
+std::vector<BallId> World::balls() const {
+  std::vector<BallId> ids;
+  ids.reserve(impl_->live_count);
+  for (std::uint32_t i = 0; i < impl_->balls.size(); ++i) {
+    if (impl_->balls[i].alive) ids.push_back(impl_->id_of(i));
+  }
+  return ids;
+}
+
+WallId World::add_segment(const Segment& segment) {
+  constexpr const char* kFunction = "World::add_segment";
+  detail::require_finite(kFunction, "segment.a", segment.a);
+  detail::require_finite(kFunction, "segment.b", segment.b);
+  Impl& w = *impl_;
+  if (w.def.boundary == Boundary::periodic) {
+    refuse(kFunction, "segment", "-", "walls in a periodic world are not supported yet");
+  }
+  w.walls.push_back(detail::make_segment_wall(segment));
+  w.grid_valid = false;
+  w.events_valid = false;
+  return static_cast<WallId>(w.walls.size() - 1);
+}
+
+WallId World::add_polyline(std::span<const Vec2> points, bool closed) {
+  if (points.size() < 2) {
+    refuse("World::add_polyline", "points.size()", std::to_string(points.size()),
+           "a polyline needs at least 2 points");
+  }
+  const auto first = static_cast<WallId>(impl_->walls.size());
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) add_segment({points[i], points[i + 1]});
+  if (closed && points.size() > 2) add_segment({points.back(), points.front()});
+  return first;
+}
+
+WallId World::add_arc(const Arc& arc) {
+  constexpr const char* kFunction = "World::add_arc";
+  Impl& w = *impl_;
+  detail::Wall wall = detail::make_arc_wall(kFunction, arc);
+  if (w.def.boundary == Boundary::periodic) {
+    refuse(kFunction, "arc", "-", "walls in a periodic world are not supported yet");
+  }
+  w.walls.push_back(wall);
+  w.grid_valid = false;
+  w.events_valid = false;
+  return static_cast<WallId>(w.walls.size() - 1);
+}
+
+WallId World::add_box(Vec2 lower, Vec2 upper) {
+  const Vec2 corners[] = {lower, {upper.x, lower.y}, upper, {lower.x, upper.y}};
+  return add_polyline(corners, true);
+}
+
+std::size_t World::wall_count() const noexcept { return impl_->walls.size(); }
+
+double World::step(double dt) {
+  detail::require_non_negative("World::step", "dt", dt);
+  const double start = impl_->time;
+  impl_->run(start + dt, std::numeric_limits<std::uint64_t>::max());
+  return impl_->time - start;
+}
+
+double World::run_until(double time) {
+  detail::require_finite("World::run_until", "time", time);
+  if (time < impl_->time) {
+    refuse("World::run_until", "time", number(time),
+           "must not be before the world's time " + number(impl_->time));
+  }
+  const double start = impl_->time;
+  impl_->run(time, std::numeric_limits<std::uint64_t>::max());
+  return impl_->time - start;
+}
+
+std::uint64_t World::run_collisions(std::uint64_t count) {
+  if (count == 0) {
+    impl_->contacts.clear();
+    return 0;
+  }
+  return impl_->run(std::numeric_limits<double>::infinity(), count);
+}
+
+void World::set_stop_condition(std::function<bool(const ContactEvent&)> condition) {
+  impl_->stop_condition = std::move(condition);
+}
+
+bool World::stopped_early() const noexcept { return impl_->stopped; }
+
+std::span<const ContactEvent> World::contacts() const noexcept { return impl_->contacts; }
+
+double World::time() const noexcept { return impl_->time; }
+
+Vec2 World::position(BallId id) const {
+  const std::uint32_t slot = impl_->slot_of("World::position", id);
+  return impl_->position_at(slot, impl_->time);
+}
+
+Vec2 World::velocity(BallId id) const {
+  return impl_->balls[impl_->slot_of("World::velocity", id)].velocity;
+}
+
+double World::radius(BallId id) const {
+  return impl_->balls[impl_->slot_of("World::radius", id)].radius;
+}
+
+double World::mass(BallId id) const { return impl_->balls[impl_->slot_of("World::mass", id)].mass; }
+
+std::uint64_t World::user_data(BallId id) const {
+  return impl_->balls[impl_->slot_of("World::user_data", id)].user_data;
+}
+
+std::size_t World::ball_count() const noexcept { return impl_->live_count; }
+
+double World::kinetic_energy() const noexcept {
+  double energy = 0.0;
+  for (const BallSlot& b : impl_->balls) {
+    if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * b.mass * length_squared(b.velocity);
+  }
+  return energy;
+}
+
+Vec2 World::momentum() const noexcept {
+  Vec2 total;
+  for (const BallSlot& b : impl_->balls) {
+    if (b.alive && b.inverse_mass > 0.0) total += b.velocity * b.mass;
+  }
+  return total;
+}
+
+std::uint64_t World::collision_count() const noexcept { return impl_->collisions; }
+
+void World::set_velocity(BallId id, Vec2 velocity) {
+  constexpr const char* kFunction = "World::set_velocity";
+  const std::uint32_t slot = impl_->slot_of(kFunction, id);
+  detail::require_finite(kFunction, "velocity", velocity);
+  BallSlot& b = impl_->balls[slot];
+  b.position = impl_->position_at(slot, impl_->time);
+  b.local_time = impl_->time;
+  b.velocity = velocity;
+  ++b.version;
+  impl_->events_valid = false;
+}
+
+Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
+  constexpr const char* kFunction = "World::set_position";
+  Impl& w = *impl_;
+  const std::uint32_t slot = w.slot_of(kFunction, id);
+  detail::require_finite(kFunction, "position", position);
+  BallSlot& b = w.balls[slot];
+  const Vec2 from = w.position_at(slot, w.time);
+  Vec2 target = position;
+  if (placement == Placement::nearest_free) {
+    // Sweep the ball from where it is to where it is asked to go; it stops at the first touch.
+    const Vec2 move = position - from;
+    double fraction = 1.0;
+    const Ball moving{from, b.radius};
+    for (std::uint32_t j = 0; j < w.balls.size(); ++j) {
+      if (j == slot || !w.balls[j].alive) continue;
+      const Vec2 other = from + w.minimum_image(w.position_at(j, w.time) - from);
+      const Impact hit = sweep_ball_ball(moving, move, {other, w.balls[j].radius});
+      if (hit.hit) fraction = std::min(fraction, hit.t);
+    }
+    for (const detail::Wall& wall : w.walls) {
+      const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
+      if (hit.hit) fraction = std::min(fraction, hit.t);
+    }
+    target = from + move * fraction;
+  }
+  target = w.wrap_into_cell(target);
+  w.ensure_grid(target, b.radius);
+  const std::string overlap = w.overlap_at(target, b.radius, slot);
+  if (!overlap.empty()) {
+    refuse(kFunction, "position", detail::vector_text(position),
+           "the ball cannot go there: " + overlap);
+  }
+  w.grid.erase(slot);
+  b.position = target;
+  b.local_time = w.time;
+  ++b.version;
+  w.grid.insert(slot, w.grid.cell_of(target));
+  w.events_valid = false;
+  return target;
+}
+
+std::optional<std::string> World::audit(double tolerance) const {
+  const Impl& w = *impl_;
+  for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
+    const BallSlot& a = w.balls[i];
+    if (!a.alive) continue;
+    const Vec2 p = w.position_at(i, w.time);
+    if (!is_finite(p) || !is_finite(a.velocity)) {
+      return "ball " + std::to_string(i) + " has a non-finite position or velocity";
+    }
+    if (w.def.boundary == Boundary::box) {
+      const double slack = tolerance * a.radius;
+      if (p.x - a.radius < w.def.lower.x - slack || p.x + a.radius > w.def.upper.x + slack ||
+          p.y - a.radius < w.def.lower.y - slack || p.y + a.radius > w.def.upper.y + slack) {
+        return "ball " + std::to_string(i) + " reaches outside the box";
+      }
+    }
+    for (std::size_t k = 0; k < w.walls.size(); ++k) {
+      const double gap = length(detail::nearest_point(w.walls[k], p) - p);
+      if (gap < a.radius * (1.0 - tolerance)) {
+        return "ball " + std::to_string(i) + " overlaps wall " + std::to_string(k) + " by " +
+               number(a.radius - gap);
+      }
+    }
+    for (std::uint32_t j = i + 1; j < w.balls.size(); ++j) {
+      const BallSlot& b = w.balls[j];
+      if (!b.alive) continue;
+      const double reach = a.radius + b.radius;
+      const double gap = length(w.minimum_image(w.position_at(j, w.time) - p));
+      if (gap < reach * (1.0 - tolerance)) {
+        return "balls " + std::to_string(i) + " and " + std::to_string(j) + " overlap by " +
+               number(reach - gap);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace carom

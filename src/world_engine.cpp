@@ -1,0 +1,380 @@
+// The event-driven engine behind carom::World: prediction, the event loop, contact response and
+// the grid's upkeep. Design and the argument that no contact is missed: docs/world.md.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "circle_crossing.hpp"
+#include "world_impl.hpp"
+
+namespace carom {
+
+using detail::BallSlot;
+using detail::Event;
+using detail::EventKind;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The horizon handed to a time-of-impact query when nothing earlier bounds it.
+constexpr double kFarFuture = std::numeric_limits<double>::max();
+// Cells are this much wider than the largest diameter: a ball is filed in a cell by its crossing
+// events, and at the moment it changes cells its computed centre may sit a rounding on the old
+// side. The margin keeps every ball that can touch it within the 3×3 block regardless.
+constexpr double kCellMargin = 1e-6;
+// An open world's grid covers the balls and walls with this much room on each side (as a
+// fraction of their extent), so that it is rebuilt only every so often as balls spread out.
+constexpr double kOpenGrowth = 0.5;
+// At most this many cells per ball (plus a floor), so that a ball far away makes cells larger
+// rather than the grid huge.
+constexpr double kCellsPerBall = 4.0;
+constexpr double kMinCells = 1024.0;
+
+}  // namespace
+
+// ---- the grid -----------------------------------------------------------------------------
+
+void World::Impl::ensure_grid(Vec2 extra_point, double extra_radius) {
+  if (grid_valid) {
+    const Vec2 cell = grid.cell_size();
+    const bool cell_fits = 2.0 * extra_radius * (1.0 + kCellMargin) <= std::min(cell.x, cell.y);
+    const Vec2 lower = grid.lower();
+    const Vec2 upper = grid.upper();
+    const bool inside =
+        def.boundary != Boundary::open || (extra_point.x >= lower.x && extra_point.x <= upper.x &&
+                                           extra_point.y >= lower.y && extra_point.y <= upper.y);
+    if (cell_fits && inside) return;
+  }
+  rebuild_grid(extra_point, extra_radius);
+}
+
+void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
+  double largest = extra_radius;
+  Vec2 lower = extra_point;
+  Vec2 upper = extra_point;
+  for (std::uint32_t i = 0; i < balls.size(); ++i) {
+    if (!balls[i].alive) continue;
+    largest = std::max(largest, balls[i].radius);
+    const Vec2 p = position_at(i, time);
+    lower = {std::min(lower.x, p.x), std::min(lower.y, p.y)};
+    upper = {std::max(upper.x, p.x), std::max(upper.y, p.y)};
+  }
+  for (const detail::Wall& wall : walls) {
+    Vec2 wall_lower;
+    Vec2 wall_upper;
+    detail::bounds(wall, wall_lower, wall_upper);
+    lower = {std::min(lower.x, wall_lower.x), std::min(lower.y, wall_lower.y)};
+    upper = {std::max(upper.x, wall_upper.x), std::max(upper.y, wall_upper.y)};
+  }
+  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + kCellMargin));
+  if (def.boundary == Boundary::open) {
+    const double room = kOpenGrowth * std::max(upper.x - lower.x, upper.y - lower.y) + 2.0 * cell;
+    lower -= Vec2{room, room};
+    upper += Vec2{room, room};
+  } else {
+    lower = def.lower;
+    upper = def.upper;
+  }
+  const Vec2 extent = upper - lower;
+  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
+  if (extent.x / cell * (extent.y / cell) > max_cells) {
+    cell = std::sqrt(extent.x * extent.y / max_cells);
+  }
+  const auto nx = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.x / cell)));
+  const auto ny = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.y / cell)));
+  grid.setup(lower, {extent.x / nx, extent.y / ny}, nx, ny, def.boundary == Boundary::periodic,
+             static_cast<std::uint32_t>(balls.size()));
+  for (std::uint32_t i = 0; i < balls.size(); ++i) {
+    if (balls[i].alive) grid.insert(i, grid.cell_of(position_at(i, time)));
+  }
+  for (std::uint32_t w = 0; w < walls.size(); ++w) {
+    Vec2 wall_lower;
+    Vec2 wall_upper;
+    detail::bounds(walls[w], wall_lower, wall_upper);
+    grid.add_wall(w, wall_lower, wall_upper);
+  }
+  grid_valid = true;
+  events_valid = false;
+}
+
+// A grid built while balls were being added may have cells far larger than the balls now need
+// (its cell count was capped for the few balls there were); more balls per cell means more pairs
+// per prediction.
+bool World::Impl::grid_too_coarse() const {
+  double largest = 0.0;
+  for (const BallSlot& b : balls) {
+    if (b.alive) largest = std::max(largest, b.radius);
+  }
+  const double wanted = std::max(def.cell_size, 2.0 * largest * (1.0 + kCellMargin));
+  const Vec2 cell = grid.cell_size();
+  const Vec2 extent = grid.upper() - grid.lower();
+  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
+  const double capped = std::max(wanted, std::sqrt(extent.x * extent.y / max_cells));
+  constexpr double kCoarseness = 2.0;  // rebuild only when a finer grid would pay clearly
+  return std::min(cell.x, cell.y) > kCoarseness * capped;
+}
+
+// ---- prediction ---------------------------------------------------------------------------
+
+void World::Impl::advance(std::uint32_t ball, double t) {
+  BallSlot& b = balls[ball];
+  b.position = position_at(ball, t);
+  b.local_time = t;
+}
+
+void World::Impl::synchronize(double t) {
+  for (std::uint32_t i = 0; i < balls.size(); ++i) {
+    if (balls[i].alive) advance(i, t);
+  }
+  time = t;
+}
+
+void World::Impl::predict_all() {
+  queue.reset(static_cast<std::uint32_t>(balls.size()));
+  for (std::uint32_t i = 0; i < balls.size(); ++i) {
+    if (balls[i].alive) predict(i);
+  }
+  events_valid = true;
+}
+
+// Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
+// in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. A
+// contact with another ball earlier than that ball's own slot goes into its slot too, so that
+// every ball's slot always holds an event no later than its true next one (docs/world.md).
+void World::Impl::predict(std::uint32_t ball) {
+  const BallSlot& b = balls[ball];
+  const Vec2 p = b.position;
+  const Vec2 v = b.velocity;
+  Event best;
+  best.owner = ball;
+
+  // Leaving the cell. In a box the outermost cells have no outer side to leave through.
+  const std::int32_t cell = grid.cell_of_ball(ball);
+  const Vec2 low = grid.cell_lower(cell);
+  const Vec2 high = grid.cell_upper(cell);
+  const bool wraps = def.boundary != Boundary::box;
+  const std::int32_t cx = grid.column(cell);
+  const std::int32_t cy = grid.row(cell);
+  auto consider_crossing = [&](double distance, double speed, std::uint32_t side, bool allowed) {
+    if (!allowed || speed == 0.0) return;
+    const double t = time + std::max(0.0, distance / speed);
+    if (t < best.time) {
+      best.time = t;
+      best.kind = EventKind::cell_crossing;
+      best.partner = side;
+    }
+  };
+  consider_crossing(high.x - p.x, v.x, detail::kRight, v.x > 0.0 && (wraps || cx + 1 < grid.nx()));
+  consider_crossing(low.x - p.x, v.x, detail::kLeft, v.x < 0.0 && (wraps || cx > 0));
+  consider_crossing(high.y - p.y, v.y, detail::kUp, v.y > 0.0 && (wraps || cy + 1 < grid.ny()));
+  consider_crossing(low.y - p.y, v.y, detail::kDown, v.y < 0.0 && (wraps || cy > 0));
+
+  // Walls listed in this cell.
+  const Ball shape{p, b.radius};
+  for (const std::uint32_t w : grid.walls(cell)) {
+    const double horizon = best.time < kInfinity ? best.time - time : kFarFuture;
+    const Impact impact = detail::time_of_impact(walls[w], shape, v, horizon);
+    if (!impact.hit) continue;
+    Event candidate;
+    candidate.time = time + impact.t;
+    candidate.kind = EventKind::ball_wall;
+    candidate.owner = ball;
+    candidate.partner = w;
+    if (detail::earlier(candidate, best)) best = candidate;
+  }
+
+  // Balls in the neighbouring cells.
+  grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
+    for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      const auto other = static_cast<std::uint32_t>(j);
+      if (other == ball) continue;
+      const BallSlot& o = balls[other];
+      if (b.inverse_mass == 0.0 && o.inverse_mass == 0.0) continue;  // nothing can respond
+      const Vec2 s = minimum_image(p - position_at(other, time));
+      const detail::Crossing crossing =
+          detail::entry_crossing(s, v - o.velocity, b.radius + o.radius, kFarFuture);
+      if (!crossing.found) continue;
+      Event candidate;
+      candidate.time = time + crossing.t;
+      candidate.kind = EventKind::ball_ball;
+      candidate.owner = ball;
+      candidate.partner = other;
+      candidate.partner_version = o.version;
+      if (detail::earlier(candidate, best)) best = candidate;
+      Event mirrored = candidate;
+      mirrored.owner = other;
+      mirrored.partner = ball;
+      mirrored.partner_version = b.version;
+      if (detail::earlier(mirrored, queue.slot(other))) queue.set(other, mirrored);
+    }
+  });
+  queue.set(ball, best);
+}
+
+// ---- the event loop -----------------------------------------------------------------------
+
+std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
+  contacts.clear();
+  stopped = false;
+  if (!grid_valid || grid_too_coarse()) rebuild_grid(Vec2{}, 0.0);
+  if (!events_valid) predict_all();
+  std::uint64_t resolved = 0;
+  while (!queue.empty()) {
+    const Event event = queue.top();
+    if (!(event.time <= end)) break;
+    time = event.time;
+    if (!process(event)) continue;
+    ++resolved;
+    ++collisions;
+    const bool stop = stop_condition && stop_condition(contacts.back());
+    if (stop || resolved == max_contacts) {
+      stopped = stop;
+      synchronize(time);
+      return resolved;
+    }
+  }
+  synchronize(end < kInfinity ? end : time);
+  return resolved;
+}
+
+bool World::Impl::process(const Event& event) {
+  const std::uint32_t i = event.owner;
+  switch (event.kind) {
+    case EventKind::ball_ball: {
+      const std::uint32_t j = event.partner;
+      if (!balls[j].alive || balls[j].version != event.partner_version) {
+        advance(i, event.time);  // stale: the partner changed course since
+        predict(i);
+        return false;
+      }
+      return resolve_ball_ball(i, j, event.time);
+    }
+    case EventKind::ball_wall:
+      return resolve_ball_wall(i, event.partner, event.time);
+    case EventKind::cell_crossing:
+      cross_cell(i, event.partner, event.time);
+      return false;
+  }
+  return false;
+}
+
+double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t) const {
+  // Inelastic collapse prevention (TC model): recently collided balls bounce elastically.
+  const double recent = t - def.collapse_time;
+  if (def.collapse_time > 0.0 &&
+      (balls[i].last_contact_time > recent || balls[j].last_contact_time > recent)) {
+    return 1.0;
+  }
+  return std::min(balls[i].restitution, balls[j].restitution);
+}
+
+bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) {
+  advance(i, t);
+  advance(j, t);
+  BallSlot& a = balls[i];
+  BallSlot& b = balls[j];
+  const Vec2 between = minimum_image(b.position - a.position);
+  const Vec2 normal = between == Vec2{} ? normalized(a.velocity - b.velocity) : normalized(between);
+  const double approach = dot(a.velocity - b.velocity, normal);
+  bool resolved = false;
+  if (approach > 0.0) {
+    const double restitution = pair_restitution(i, j, t);
+    const double impulse = (1.0 + restitution) * approach / (a.inverse_mass + b.inverse_mass);
+    a.velocity -= normal * (impulse * a.inverse_mass);
+    b.velocity += normal * (impulse * b.inverse_mass);
+    a.last_contact_time = t;
+    b.last_contact_time = t;
+    const bool a_first = i < j;
+    ContactEvent contact;
+    contact.time = t;
+    contact.kind = ContactKind::ball_ball;
+    contact.a = id_of(a_first ? i : j);
+    contact.b = id_of(a_first ? j : i);
+    contact.normal = a_first ? normal : -normal;
+    const double reach = a.radius + b.radius;
+    contact.point = a.position + between * (a.radius / reach);
+    contact.approach_speed = approach;
+    contact.impulse = impulse;
+    contacts.push_back(contact);
+    resolved = true;
+  }
+  ++a.version;
+  ++b.version;
+  predict(i);
+  predict(j);
+  return resolved;
+}
+
+bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t) {
+  advance(i, t);
+  BallSlot& a = balls[i];
+  // The contact's own normal where the query confirms it (touching and approaching now), else
+  // the direction to the nearest point (the ball a rounding short of the wall).
+  const Impact now = detail::time_of_impact(walls[wall], {a.position, a.radius}, a.velocity, 0.0);
+  const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
+  const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
+  const double approach = dot(a.velocity, normal);
+  bool resolved = false;
+  if (approach > 0.0) {
+    const double restitution =
+        def.collapse_time > 0.0 && a.last_contact_time > t - def.collapse_time ? 1.0
+                                                                               : a.restitution;
+    const double speed_change = (1.0 + restitution) * approach;
+    a.velocity -= normal * speed_change;
+    a.last_contact_time = t;
+    ContactEvent contact;
+    contact.time = t;
+    contact.kind = ContactKind::ball_wall;
+    contact.a = id_of(i);
+    contact.wall = wall;
+    contact.point = point;
+    contact.normal = normal;
+    contact.approach_speed = approach;
+    contact.impulse = a.inverse_mass > 0.0 ? speed_change * a.mass : 0.0;
+    contacts.push_back(contact);
+    resolved = true;
+    ++a.version;
+  }
+  predict(i);
+  return resolved;
+}
+
+void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t) {
+  advance(ball, t);
+  BallSlot& b = balls[ball];
+  const std::int32_t cell = grid.cell_of_ball(ball);
+  std::int32_t cx = grid.column(cell);
+  std::int32_t cy = grid.row(cell);
+  cx += side == detail::kRight ? 1 : (side == detail::kLeft ? -1 : 0);
+  cy += side == detail::kUp ? 1 : (side == detail::kDown ? -1 : 0);
+  if (def.boundary == Boundary::periodic) {
+    // Leaving the periodic cell: re-enter at the opposite side, the position shifted by a period.
+    const Vec2 size = def.upper - def.lower;
+    if (cx < 0) {
+      cx += grid.nx();
+      b.position.x += size.x;
+    } else if (cx >= grid.nx()) {
+      cx -= grid.nx();
+      b.position.x -= size.x;
+    }
+    if (cy < 0) {
+      cy += grid.ny();
+      b.position.y += size.y;
+    } else if (cy >= grid.ny()) {
+      cy -= grid.ny();
+      b.position.y -= size.y;
+    }
+  } else if (cx < 0 || cx >= grid.nx() || cy < 0 || cy >= grid.ny()) {
+    // An open world's ball leaving the grid: bring everyone to now and grow the grid.
+    synchronize(t);
+    rebuild_grid(b.position, b.radius);
+    predict_all();
+    return;
+  }
+  grid.erase(ball);
+  grid.insert(ball, grid.index(cx, cy));
+  predict(ball);
+}
+
+}  // namespace carom

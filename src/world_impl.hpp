@@ -1,0 +1,93 @@
+// carom internal: the state behind carom::World and the event-driven engine's operations.
+// The engine itself (prediction, event processing, the grid's upkeep) is in world_engine.cpp;
+// the public API with its validation in world.cpp. Design: docs/world.md.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "carom/world.hpp"
+#include "event_queue.hpp"
+#include "grid.hpp"
+#include "wall.hpp"
+
+namespace carom {
+
+namespace detail {
+
+// A ball slot. A ball moves in a straight line between its events, so it is stored at its own
+// local time: its position at any later time t is position + velocity·(t − local_time).
+struct BallSlot {
+  Vec2 position;
+  Vec2 velocity;
+  double local_time = 0.0;
+  double radius = 0.0;
+  double mass = 0.0;
+  double inverse_mass = 0.0;  // 0 for an immovable ball
+  double restitution = 1.0;
+  double last_contact_time = -std::numeric_limits<double>::infinity();
+  std::uint64_t user_data = 0;
+  std::uint32_t generation = 1;  // the live (or next) generation; never 0
+  std::uint32_t version = 0;     // bumped whenever the trajectory changes
+  bool alive = false;
+};
+
+}  // namespace detail
+
+struct World::Impl {
+  WorldDef def;
+  std::vector<detail::BallSlot> balls;
+  std::vector<std::uint32_t> free_slots;  // reused last-freed first
+  std::size_t live_count = 0;
+  std::vector<detail::Wall> walls;
+  std::uint32_t boundary_walls = 0;  // the box boundary's four walls come first
+
+  detail::Grid grid;
+  bool grid_valid = false;
+  detail::EventQueue queue;
+  bool events_valid = false;
+
+  double time = 0.0;
+  std::uint64_t collisions = 0;
+  std::vector<ContactEvent> contacts;
+  std::function<bool(const ContactEvent&)> stop_condition;
+  bool stopped = false;
+
+  // ---- handles ----
+  [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
+  [[nodiscard]] BallId id_of(std::uint32_t slot) const { return {slot, balls[slot].generation}; }
+
+  // ---- geometry ----
+  [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
+    const detail::BallSlot& b = balls[ball];
+    return b.position + b.velocity * (t - b.local_time);
+  }
+  // The shortest of the periodic images of d (d itself in a world that does not wrap).
+  [[nodiscard]] Vec2 minimum_image(Vec2 d) const;
+  [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const;
+  // The first ball or wall that a ball of radius r at p would overlap (ignoring `except`), as a
+  // message; empty when the place is free.
+  [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;
+
+  // ---- engine (world_engine.cpp) ----
+  // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,
+  // for an open world, cover every ball and wall), rebuilding it when it does not.
+  void ensure_grid(Vec2 extra_point, double extra_radius);
+  void rebuild_grid(Vec2 extra_point, double extra_radius);
+  [[nodiscard]] bool grid_too_coarse() const;
+  void predict_all();
+  void predict(std::uint32_t ball);
+  void advance(std::uint32_t ball, double t);
+  void synchronize(double t);
+  // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts.
+  std::uint64_t run(double end, std::uint64_t max_contacts);
+  bool process(const detail::Event& event);  // true when a contact was resolved
+  bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
+  bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
+  void cross_cell(std::uint32_t ball, std::uint32_t side, double t);
+  [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
+};
+
+}  // namespace carom

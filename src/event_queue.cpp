@@ -10,7 +10,7 @@ void EventQueue::reset(std::uint32_t count) {
   position_.resize(count);
   for (std::uint32_t i = 0; i < count; ++i) {
     events_[i].owner = i;
-    heap_[i] = i;
+    heap_[i] = {events_[i].time, i};
     position_[i] = i;
   }
 }
@@ -21,12 +21,13 @@ void EventQueue::add_slot() {
   nothing.owner = owner;
   events_.push_back(nothing);
   position_.push_back(static_cast<std::uint32_t>(heap_.size()));
-  heap_.push_back(owner);
+  heap_.push_back({nothing.time, owner});
 }
 
 void EventQueue::set(std::uint32_t owner, const Event& event) {
   const bool sooner = earlier(event, events_[owner]);
   events_[owner] = event;
+  heap_[position_[owner]].time = event.time;
   if (sooner) {
     sift_up(position_[owner]);
   } else {
@@ -36,8 +37,8 @@ void EventQueue::set(std::uint32_t owner, const Event& event) {
 
 void EventQueue::swap_positions(std::uint32_t a, std::uint32_t b) {
   std::swap(heap_[a], heap_[b]);
-  position_[heap_[a]] = a;
-  position_[heap_[b]] = b;
+  position_[heap_[a].owner] = a;
+  position_[heap_[b].owner] = b;
 }
 
 void EventQueue::sift_up(std::uint32_t position) {

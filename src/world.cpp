@@ -47,23 +47,6 @@ std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   return id.index;
 }
 
-Vec2 World::Impl::minimum_image(Vec2 d) const {
-  if (def.boundary != Boundary::periodic) return d;
-  // Differences are between positions inside the cell, so one period at most is ever needed.
-  const Vec2 size = def.upper - def.lower;
-  if (d.x > 0.5 * size.x) {
-    d.x -= size.x;
-  } else if (d.x < -0.5 * size.x) {
-    d.x += size.x;
-  }
-  if (d.y > 0.5 * size.y) {
-    d.y -= size.y;
-  } else if (d.y < -0.5 * size.y) {
-    d.y += size.y;
-  }
-  return d;
-}
-
 Vec2 World::Impl::wrap_into_cell(Vec2 p) const {
   if (def.boundary != Boundary::periodic) return p;
   const Vec2 size = def.upper - def.lower;
@@ -121,6 +104,8 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
     }
   }
   impl_->def = def;
+  impl_->period = def.upper - def.lower;
+  impl_->half_period = impl_->period * 0.5;
   if (def.boundary == Boundary::box) {
     add_box(def.lower, def.upper);
     impl_->boundary_walls = 4;
@@ -175,6 +160,7 @@ BallId World::add_ball(const BallDef& def) {
   b.alive = true;
   ++b.version;
   ++w.live_count;
+  w.largest_radius = std::max(w.largest_radius, def.radius);
   w.grid.insert(slot, w.grid.cell_of(position));
   w.events_valid = false;
   return w.id_of(slot);

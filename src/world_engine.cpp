@@ -101,10 +101,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
 // (its cell count was capped for the few balls there were); more balls per cell means more pairs
 // per prediction.
 bool World::Impl::grid_too_coarse() const {
-  double largest = 0.0;
-  for (const BallSlot& b : balls) {
-    if (b.alive) largest = std::max(largest, b.radius);
-  }
+  const double largest = largest_radius;
   const double wanted = std::max(def.cell_size, 2.0 * largest * (1.0 + kCellMargin));
   const Vec2 cell = grid.cell_size();
   const Vec2 extent = grid.upper() - grid.lower();
@@ -230,11 +227,12 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
     const bool stop = stop_condition && stop_condition(contacts.back());
     if (stop || resolved == max_contacts) {
       stopped = stop;
-      synchronize(time);
       return resolved;
     }
   }
-  synchronize(end < kInfinity ? end : time);
+  // Balls stay at their own local times: queries compute positions at the world's time, so
+  // splitting a run into steps changes nothing (no re-rounding of positions at step ends).
+  if (end < kInfinity) time = end;
   return resolved;
 }
 

@@ -43,6 +43,9 @@ struct World::Impl {
   std::size_t live_count = 0;
   std::vector<detail::Wall> walls;
   std::uint32_t boundary_walls = 0;  // the box boundary's four walls come first
+  Vec2 period;                       // upper − lower (periodic worlds)
+  Vec2 half_period;                  // half of it
+  double largest_radius = 0.0;       // of every ball ever added (never lowered: cells stay valid)
 
   detail::Grid grid;
   bool grid_valid = false;
@@ -65,7 +68,21 @@ struct World::Impl {
     return b.position + b.velocity * (t - b.local_time);
   }
   // The shortest of the periodic images of d (d itself in a world that does not wrap).
-  [[nodiscard]] Vec2 minimum_image(Vec2 d) const;
+  [[nodiscard]] Vec2 minimum_image(Vec2 d) const {
+    if (def.boundary != Boundary::periodic) return d;
+    // Differences are between positions inside the cell, so one period at most is ever needed.
+    if (d.x > half_period.x) {
+      d.x -= period.x;
+    } else if (d.x < -half_period.x) {
+      d.x += period.x;
+    }
+    if (d.y > half_period.y) {
+      d.y -= period.y;
+    } else if (d.y < -half_period.y) {
+      d.y += period.y;
+    }
+    return d;
+  }
   [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const;
   // The first ball or wall that a ball of radius r at p would overlap (ignoring `except`), as a
   // message; empty when the place is free.

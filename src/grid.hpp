@@ -57,26 +57,35 @@ class Grid {
   void for_each_neighbour(std::int32_t cell, Visit&& visit) const {
     const std::int32_t cx = column(cell);
     const std::int32_t cy = row(cell);
-    for (std::int32_t dy = -1; dy <= 1; ++dy) {
-      std::int32_t y = cy + dy;
-      if (periodic_) {
-        y = (y + ny_) % ny_;
-      } else if (y < 0 || y >= ny_) {
-        continue;
-      }
-      for (std::int32_t dx = -1; dx <= 1; ++dx) {
-        std::int32_t x = cx + dx;
-        if (periodic_) {
-          x = (x + nx_) % nx_;
-        } else if (x < 0 || x >= nx_) {
-          continue;
-        }
-        visit(index(x, y));
-      }
+    std::int32_t columns[3];
+    std::int32_t rows[3];
+    const int column_count = neighbours(cx, nx_, columns);
+    const int row_count = neighbours(cy, ny_, rows);
+    for (int r = 0; r < row_count; ++r) {
+      const std::int32_t base = rows[r] * nx_;
+      for (int c = 0; c < column_count; ++c) visit(base + columns[c]);
     }
   }
 
  private:
+  // The indices next to i along an axis of n cells (wrapping, or clipped at the edges), without
+  // an integer division; a periodic grid has n >= 3, so the three are distinct.
+  [[nodiscard]] int neighbours(std::int32_t i, std::int32_t n, std::int32_t out[3]) const {
+    int count = 0;
+    if (i > 0) {
+      out[count++] = i - 1;
+    } else if (periodic_) {
+      out[count++] = n - 1;
+    }
+    out[count++] = i;
+    if (i + 1 < n) {
+      out[count++] = i + 1;
+    } else if (periodic_) {
+      out[count++] = 0;
+    }
+    return count;
+  }
+
   Vec2 lower_;
   Vec2 cell_{1.0, 1.0};
   std::int32_t nx_ = 1;

@@ -125,7 +125,7 @@ BallId World::add_ball(const BallDef& def) {
     // Three cells of at least a diameter per axis keep every neighbour cell distinct.
     const Vec2 size = w.def.upper - w.def.lower;
     const double widest = std::min(size.x, size.y) / 3.0;
-    if (!(2.0 * def.radius < widest)) {
+    if (!(2.0 * def.radius * (1.0 + detail::kCellMargin) <= widest)) {
       refuse(kFunction, "def.radius", number(def.radius),
              "a periodic cell must be more than 3 diameters wide on each axis");
     }

@@ -18,10 +18,6 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The horizon handed to a time-of-impact query when nothing earlier bounds it.
 constexpr double kFarFuture = std::numeric_limits<double>::max();
-// Cells are this much wider than the largest diameter: a ball is filed in a cell by its crossing
-// events, and at the moment it changes cells its computed centre may sit a rounding on the old
-// side. The margin keeps every ball that can touch it within the 3×3 block regardless.
-constexpr double kCellMargin = 1e-6;
 // An open world's grid covers the balls and walls with this much room on each side (as a
 // fraction of their extent), so that it is rebuilt only every so often as balls spread out.
 constexpr double kOpenGrowth = 0.5;
@@ -37,7 +33,8 @@ constexpr double kMinCells = 1024.0;
 void World::Impl::ensure_grid(Vec2 extra_point, double extra_radius) {
   if (grid_valid) {
     const Vec2 cell = grid.cell_size();
-    const bool cell_fits = 2.0 * extra_radius * (1.0 + kCellMargin) <= std::min(cell.x, cell.y);
+    const bool cell_fits =
+        2.0 * extra_radius * (1.0 + detail::kCellMargin) <= std::min(cell.x, cell.y);
     const Vec2 lower = grid.lower();
     const Vec2 upper = grid.upper();
     const bool inside =
@@ -66,7 +63,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
     lower = {std::min(lower.x, wall_lower.x), std::min(lower.y, wall_lower.y)};
     upper = {std::max(upper.x, wall_upper.x), std::max(upper.y, wall_upper.y)};
   }
-  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + kCellMargin));
+  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
   if (def.boundary == Boundary::open) {
     const double room = kOpenGrowth * std::max(upper.x - lower.x, upper.y - lower.y) + 2.0 * cell;
     lower -= Vec2{room, room};
@@ -79,6 +76,11 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
   if (extent.x / cell * (extent.y / cell) > max_cells) {
     cell = std::sqrt(extent.x * extent.y / max_cells);
+  }
+  if (def.boundary == Boundary::periodic) {
+    // Three cells per axis at least, so the 3×3 block never holds a cell twice (add_ball keeps
+    // every diameter below this).
+    cell = std::min(cell, std::min(extent.x, extent.y) / 3.0);
   }
   const auto nx = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.x / cell)));
   const auto ny = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.y / cell)));
@@ -102,7 +104,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
 // per prediction.
 bool World::Impl::grid_too_coarse() const {
   const double largest = largest_radius;
-  const double wanted = std::max(def.cell_size, 2.0 * largest * (1.0 + kCellMargin));
+  const double wanted = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
   const Vec2 cell = grid.cell_size();
   const Vec2 extent = grid.upper() - grid.lower();
   const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));

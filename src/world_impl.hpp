@@ -17,6 +17,11 @@ namespace carom {
 
 namespace detail {
 
+// Grid cells are this much wider than the largest diameter: a ball is filed in a cell by its
+// crossing events, and at the moment it changes cells its computed centre may sit a rounding on
+// the old side. The margin keeps every ball that can touch it within the 3×3 block regardless.
+inline constexpr double kCellMargin = 1e-6;
+
 // A ball slot. A ball moves in a straight line between its events, so it is stored at its own
 // local time: its position at any later time t is position + velocity·(t − local_time).
 struct BallSlot {

@@ -1,6 +1,8 @@
 #include "arc_frame.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "validate.hpp"
@@ -34,7 +36,13 @@ ArcFrame make_arc_frame(const char* function, const Arc& arc) {
   require_positive(function, "arc.radius", arc.radius);
   require_finite(function, "arc.start_angle", arc.start_angle);
   require_finite(function, "arc.end_angle", arc.end_angle);
-  const double span = arc.end_angle - arc.start_angle;
+  double span = arc.end_angle - arc.start_angle;
+  // end = start + 2π computed in doubles can overshoot 2π by the rounding of the larger angle;
+  // that is a full circle, not an error.
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  const double rounding = 4.0 * std::numeric_limits<double>::epsilon() *
+                          std::max({std::abs(arc.start_angle), std::abs(arc.end_angle), kTwoPi});
+  if (span > kTwoPi && span <= kTwoPi + rounding) span = kTwoPi;
   require_in_range(function, "arc.end_angle - arc.start_angle", span, 0.0, 2.0 * std::numbers::pi,
                    "the span must lie in [0, 2*pi]");
   ArcFrame frame;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "carom/error.hpp"
 #include "carom/sweep.hpp"
 
 namespace carom {
@@ -98,6 +99,16 @@ TEST(SweepBallArc, FullCircleHasNoGap) {
   const Impact impact = sweep_ball_arc({{0.0, -10.0}, 1.0}, {0.0, 20.0}, ring);
   ASSERT_TRUE(impact.hit);
   EXPECT_NEAR(impact.t, 0.2, kTol);  // outer face at y = −6
+}
+
+TEST(SweepBallArc, FullCircleComputedAsStartPlusTwoPiIsAccepted) {
+  // (1.8 + 2π) − 1.8 rounds to one ulp above 2π: still the full circle, not an error.
+  const Arc ring{{0.0, 0.0}, 5.0, 1.8, 1.8 + 2.0 * kPi};
+  ASSERT_GT(ring.end_angle - ring.start_angle, 2.0 * kPi);
+  EXPECT_TRUE(sweep_ball_arc({{0.0, -10.0}, 1.0}, {0.0, 20.0}, ring).hit);
+  // A real excess is still refused.
+  EXPECT_THROW((void)sweep_ball_arc({{0.0, -10.0}, 1.0}, {0.0, 20.0}, {{}, 5.0, 1.0, 7.3}),
+               InvalidArgument);
 }
 
 TEST(SweepBallArc, ZeroSpanIsAPoint) {

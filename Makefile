@@ -15,7 +15,7 @@ PACKAGES := cmake ninja-build g++ clang clang-format clang-tidy \
 RUN_PICTURE := build/two-moving-balls.svg
 CAROM := build/release/apps/carom/carom
 
-.PHONY: all deps run test test-dev test-clang test-asan format-check bench format lint clean
+.PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
 
 all: run
 
@@ -58,6 +58,12 @@ test-asan:
 	cmake --preset asan
 	cmake --build --preset asan
 	ctest --preset asan
+
+# The long versions of the tests that make test runs short (CAROM_LONG_TESTS=1 un-skips them).
+test-long: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release
+	CAROM_LONG_TESTS=1 ctest --preset release
 
 format-check:
 	git ls-files -- '*.hpp' '*.cpp' | xargs clang-format --dry-run -Werror

@@ -243,7 +243,7 @@ double World::step(double dt) {
   detail::require_non_negative("World::step", "dt", dt);
   const double start = impl_->time;
   impl_->run(start + dt, std::numeric_limits<std::uint64_t>::max());
-  return impl_->time - start;
+  return impl_->stopped ? impl_->time - start : dt;
 }
 
 double World::run_until(double time) {
@@ -353,7 +353,9 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   }
   target = w.wrap_into_cell(target);
   w.ensure_grid(target, b.radius);
-  const std::string overlap = w.overlap_at(target, b.radius, slot);
+  // The swept stop point touches its obstacle, and may overlap it by a rounding: it is accepted.
+  const std::string overlap =
+      placement == Placement::nearest_free ? std::string{} : w.overlap_at(target, b.radius, slot);
   if (!overlap.empty()) {
     refuse(kFunction, "position", detail::vector_text(position),
            "the ball cannot go there: " + overlap);

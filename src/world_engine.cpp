@@ -129,6 +129,7 @@ void World::Impl::synchronize(double t) {
 }
 
 void World::Impl::predict_all() {
+  synchronize(time);  // prediction reads each ball's record as being at the world's time
   queue.reset(static_cast<std::uint32_t>(balls.size()));
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive) predict(i);
@@ -221,7 +222,7 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   std::uint64_t resolved = 0;
   while (!queue.empty()) {
     const Event event = queue.top();
-    if (!(event.time <= end)) break;
+    if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;
     if (!process(event)) continue;
     ++resolved;

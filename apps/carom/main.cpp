@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_command.hpp"
 #include "carom/error.hpp"
 #include "command.hpp"
 #include "exit_codes.hpp"
@@ -59,7 +60,8 @@ int run_tool(int argc, char** argv) {
   app.set_version_flag("--version", std::string("carom ") + CAROM_VERSION);
   app.require_subcommand(1);
   app.footer("Run 'carom VERB --help' for the options of a verb.");
-  const std::vector<carom::cli::Command> commands{carom::cli::add_sweep_command(app)};
+  const std::vector<carom::cli::Command> commands{carom::cli::add_sweep_command(app),
+                                                  carom::cli::add_bench_command(app)};
 
   try {
     app.parse(argc, argv);

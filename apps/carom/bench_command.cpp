@@ -1,0 +1,240 @@
+#include "bench_command.hpp"
+
+#include <sys/resource.h>
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+#include "bench_report.hpp"
+#include "exit_codes.hpp"
+#include "hard_disk_setup.hpp"
+#include "option_value.hpp"
+#include "readable_number.hpp"
+#include "usage_error.hpp"
+
+#ifndef CAROM_CLI_BUILD_TYPE
+#define CAROM_CLI_BUILD_TYPE ""
+#endif
+#ifndef CAROM_CLI_COMPILER
+#define CAROM_CLI_COMPILER ""
+#endif
+
+namespace carom::cli {
+namespace {
+
+// A typo with extra zeros should be refused at once, not after allocating tens of gigabytes
+// (a ball takes a few hundred bytes); the lattice code is also exact only below 2^31 disks.
+constexpr std::uint64_t kMaxBalls = 100'000'000;
+// Collision counts are computed as K·N in doubles; beyond 2^53 they would no longer be exact.
+constexpr double kMaxCollisions = 9007199254740992.0;
+
+// The options as typed; every value is parsed here, as for `carom sweep`.
+struct BenchOptions {
+  std::string n = "10000";
+  std::string eta = "0.3";
+  std::string collisions_per_ball = "10";
+  std::string equilibrate = "2";
+  std::string seed = "1";
+  bool json = false;
+};
+
+struct BenchSettings {
+  HardDiskLayout layout;
+  std::uint64_t seed = 0;
+  std::uint64_t equilibration_collisions = 0;
+  std::uint64_t collisions = 0;
+};
+
+// A whole non-negative decimal integer: digits only, no sign, no spaces.
+std::uint64_t parse_count(std::string_view option, std::string_view text,
+                          std::string_view expected) {
+  const OptionValue value{option, text, expected};
+  if (text.empty()) reject(value, "a number is missing");
+  std::uint64_t number = 0;
+  const char* const end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, number);
+  if (error == std::errc::result_out_of_range) reject(value, "the number is too large");
+  if (error != std::errc{} || stop != end) reject(value, "not a whole number");
+  return number;
+}
+
+// round(per_ball · n) collisions; per_ball must be a finite number >= minimum.
+std::uint64_t parse_collisions(std::string_view option, std::string_view text, std::uint64_t n,
+                               bool zero_allowed) {
+  const OptionValue value{option, text, zero_allowed ? "a number >= 0" : "a number > 0"};
+  const double per_ball = parse_finite_number(text, value);
+  if (zero_allowed ? !(per_ball >= 0.0) : !(per_ball > 0.0)) {
+    reject(value,
+           zero_allowed ? "collisions per ball must be >= 0" : "collisions per ball must be > 0");
+  }
+  const double total = std::round(per_ball * static_cast<double>(n));
+  if (total > kMaxCollisions) {
+    reject(value, "that makes " + readable(total) + " collisions, more than 2^53");
+  }
+  if (!zero_allowed && total < 1.0) {
+    reject(value, "that makes " + readable(per_ball * static_cast<double>(n)) + " collisions for " +
+                      std::to_string(n) + " disks, which rounds to 0");
+  }
+  return static_cast<std::uint64_t>(total);
+}
+
+BenchSettings parse(const BenchOptions& options) {
+  BenchSettings settings;
+  const std::uint64_t n = parse_count("--n", options.n, "a whole number >= 2");
+  if (n < 2) {
+    throw UsageError("--n", options.n, "at least 2 disks are needed for a collision");
+  }
+  if (n > kMaxBalls) {
+    throw UsageError("--n", options.n, "at most " + std::to_string(kMaxBalls) + " disks");
+  }
+  const OptionValue eta_value{"--eta", options.eta, "a number in (0, 0.9069)"};
+  const double eta = parse_finite_number(options.eta, eta_value);
+  if (!(eta > 0.0 && eta < kTriangularPackingLimit)) {
+    reject(eta_value,
+           "the packing fraction must lie above 0 and below that of the densest packing of "
+           "equal disks, pi/(2*sqrt(3)) = 0.9069");
+  }
+  settings.layout = hard_disk_layout(n, eta);
+  const HardDiskLayout& layout = settings.layout;
+  if (!layout.box_wide_enough()) {
+    throw UsageError("--n", options.n,
+                     "at packing fraction " + readable(eta) + " the periodic box is only " +
+                         readable(layout.side) +
+                         " wide, and it must be more than 3 disk diameters wide: raise --n or "
+                         "lower --eta");
+  }
+  if (!layout.disks_fit()) {
+    throw UsageError("--eta", options.eta,
+                     "the best triangular lattice for " + std::to_string(n) +
+                         " disks in this box has sites only " + readable(layout.nearest) +
+                         " apart, less than a diameter (1): this --n can start at packing "
+                         "fraction " +
+                         readable(layout.densest_eta) + " at most");
+  }
+  settings.collisions =
+      parse_collisions("--collisions-per-ball", options.collisions_per_ball, n, false);
+  settings.equilibration_collisions =
+      parse_collisions("--equilibrate", options.equilibrate, n, true);
+  settings.seed = parse_count("--seed", options.seed, "a whole number >= 0");
+  return settings;
+}
+
+// The process's peak resident set so far, in bytes (Linux reports ru_maxrss in KiB).
+std::uint64_t peak_resident_bytes() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0;
+  constexpr std::uint64_t kBytesPerKiB = 1024;
+  return static_cast<std::uint64_t>(usage.ru_maxrss) * kBytesPerKiB;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run(const BenchOptions& options) {
+  const BenchSettings settings = parse(options);
+  BenchOutcome outcome;
+  outcome.n = settings.layout.n;
+  outcome.eta = settings.layout.eta;
+  outcome.seed = settings.seed;
+  outcome.box_side = settings.layout.side;
+  outcome.lattice_columns = settings.layout.columns;
+  outcome.lattice_rows = settings.layout.rows;
+  outcome.build_type = CAROM_CLI_BUILD_TYPE;
+  outcome.compiler = CAROM_CLI_COMPILER;
+
+  const std::uint64_t peak_before = peak_resident_bytes();
+  auto start = std::chrono::steady_clock::now();
+  World world = make_hard_disk_world(settings.layout, settings.seed);
+  outcome.setup_seconds = seconds_since(start);
+
+  // The first run also builds the final grid and predicts every ball once; equilibration keeps
+  // that one-off cost out of the timed run.
+  start = std::chrono::steady_clock::now();
+  outcome.equilibration_collisions = world.run_collisions(settings.equilibration_collisions);
+  outcome.equilibration_seconds = seconds_since(start);
+  const std::uint64_t peak_after = peak_resident_bytes();
+  outcome.peak_rss_growth_bytes = peak_after > peak_before ? peak_after - peak_before : 0;
+
+  const double energy_before = world.kinetic_energy();
+  const Vec2 momentum_before = world.momentum();
+  start = std::chrono::steady_clock::now();
+  outcome.collisions = world.run_collisions(settings.collisions);
+  outcome.wall_seconds = seconds_since(start);
+  const double energy_after = world.kinetic_energy();
+  const Vec2 momentum_after = world.momentum();
+
+  outcome.energy_drift = (energy_after - energy_before) / energy_before;
+  const double total_mass = static_cast<double>(outcome.n) * kDiskMass;
+  outcome.momentum_drift =
+      length(momentum_after - momentum_before) / std::sqrt(2.0 * total_mass * energy_before);
+
+  if (outcome.collisions != settings.collisions) {
+    std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
+              << settings.collisions << " collisions asked for\n";
+    return kExitFailure;
+  }
+  if (options.json) {
+    std::cout << bench_json(outcome).dump() << '\n';
+  } else {
+    std::cout << bench_text(outcome);
+  }
+  return kExitSuccess;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Collisions per second of the world on a gas of equal hard disks");
+  bench->footer(
+      "N disks of diameter 1 and mass 1, elastic, in a periodic square box whose side\n"
+      "gives the packing fraction ETA = N*pi/(4*side^2). They start on the triangular\n"
+      "lattice with the most room that fits the box, with velocity components drawn\n"
+      "from a normal distribution (sd 1, std::mt19937_64 seeded with S) and the total\n"
+      "momentum removed. The world first resolves K0*N collisions, not timed (this also\n"
+      "absorbs building the grid and the first prediction of every ball), then K*N\n"
+      "collisions timed with std::chrono::steady_clock.\n\n"
+      "bytes_per_ball: the growth of the process's peak resident set size (getrusage,\n"
+      "ru_maxrss) from before the world is created to after equilibration, divided by\n"
+      "N; it includes the transient copies of growing arrays, and it is meaningful only\n"
+      "for large N (say 10^4 and up; small worlds fit in memory the process already has).\n"
+      "energy_drift: (E_after - E_before) / E_before over the timed run. momentum_drift:\n"
+      "|P_after - P_before| / sqrt(2*M*E_before), M the total mass.\n\n"
+      "Examples:\n"
+      "  carom bench --n 10000 --eta 0.3 --collisions-per-ball 10\n"
+      "  carom bench --n 100000 --eta 0.6 --collisions-per-ball 5 --seed 7 --json");
+
+  auto options = std::make_shared<BenchOptions>();
+  bench->add_option("--n", options->n, "Number of disks, at least 2")
+      ->type_name("N")
+      ->capture_default_str();
+  bench->add_option("--eta", options->eta, "Packing fraction, in (0, 0.9069)")
+      ->type_name("ETA")
+      ->capture_default_str();
+  bench
+      ->add_option("--collisions-per-ball", options->collisions_per_ball,
+                   "Timed collisions per disk (K*N in all, rounded), > 0")
+      ->type_name("K")
+      ->capture_default_str();
+  bench
+      ->add_option("--equilibrate", options->equilibrate,
+                   "Untimed collisions per disk before the timed run, >= 0")
+      ->type_name("K0")
+      ->capture_default_str();
+  bench->add_option("--seed", options->seed, "Seed of the velocities' generator")
+      ->type_name("S")
+      ->capture_default_str();
+  bench->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
+
+  return {bench, [options] { return run(*options); }};
+}
+
+}  // namespace carom::cli

@@ -1,0 +1,14 @@
+// carom tool: `carom bench`, the collision rate of the event-driven world on a gas of equal
+// hard disks in a periodic box (the scene of hard_disk_setup.hpp).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+
+namespace carom::cli {
+
+// Adds the bench verb and its options to app.
+[[nodiscard]] Command add_bench_command(CLI::App& app);
+
+}  // namespace carom::cli

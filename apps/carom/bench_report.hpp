@@ -1,0 +1,45 @@
+// carom tool: what `carom bench` measured, as text for people and as one JSON object.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace carom::cli {
+
+struct BenchOutcome {
+  std::uint64_t n = 0;
+  double eta = 0.0;
+  std::uint64_t seed = 0;
+  double box_side = 0.0;
+  std::uint64_t lattice_columns = 0;
+  std::uint64_t lattice_rows = 0;
+  double setup_seconds = 0.0;  // creating the world and adding every disk
+  std::uint64_t equilibration_collisions = 0;
+  double equilibration_seconds = 0.0;
+  std::uint64_t collisions = 0;  // resolved in the timed run
+  double wall_seconds = 0.0;     // of the timed run (std::chrono::steady_clock)
+  // Growth of the process's peak resident set (getrusage's ru_maxrss) from before the world was
+  // created to after equilibration.
+  std::uint64_t peak_rss_growth_bytes = 0;
+  double energy_drift = 0.0;    // (E_after − E_before) / E_before over the timed run
+  double momentum_drift = 0.0;  // |P_after − P_before| / √(2·M·E_before), M the total mass
+  std::string build_type;       // of this binary: the figures mean little below Release
+  std::string compiler;
+
+  [[nodiscard]] double collisions_per_second() const {
+    return static_cast<double>(collisions) / wall_seconds;
+  }
+  [[nodiscard]] double nanoseconds_per_collision() const {
+    return wall_seconds * 1e9 / static_cast<double>(collisions);
+  }
+  [[nodiscard]] double bytes_per_ball() const {
+    return static_cast<double>(peak_rss_growth_bytes) / static_cast<double>(n);
+  }
+};
+
+[[nodiscard]] std::string bench_text(const BenchOutcome& outcome);
+// Every field above and the three derived rates, numbers with every digit.
+[[nodiscard]] nlohmann::ordered_json bench_json(const BenchOutcome& outcome);
+
+}  // namespace carom::cli

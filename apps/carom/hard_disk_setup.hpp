@@ -1,0 +1,61 @@
+// carom tool and benchmarks: the hard-disk scene that `carom bench` and bench/world_bench.cpp
+// share. N equal disks (diameter 1, mass 1, elastic) in a periodic square box sized for a given
+// packing fraction, started on a triangular lattice with Maxwell–Boltzmann velocities from a
+// seeded generator and no total momentum. This file depends on the library alone (no CLI11, no
+// fmt), so the benchmarks compile it as well.
+#pragma once
+
+#include <cstdint>
+
+#include "carom/world.hpp"
+
+namespace carom::cli {
+
+inline constexpr double kDiskDiameter = 1.0;
+inline constexpr double kDiskRadius = kDiskDiameter / 2.0;
+inline constexpr double kDiskMass = 1.0;
+// The densest packing of equal disks, the triangular one: π / (2√3).
+inline constexpr double kTriangularPackingLimit = 0.906899682117108925;
+// The World wants a periodic cell more than three diameters wide on each axis, so that the 3×3
+// block of grid cells around a ball never holds the same cell twice.
+inline constexpr double kMinPeriodicSideInDiameters = 3.0;
+// Lattice sites must be at least this much more than a diameter apart: positions are rounded to
+// doubles and the world measures gaps through the minimum image, so disks exactly a diameter
+// apart on paper could overlap by a rounding and be refused.
+inline constexpr double kLatticeSlack = 1e-9;
+
+// Where the disks start: a triangular lattice of `rows` rows of `columns` sites that tiles the
+// periodic box (odd rows shifted by half a spacing). When there are more sites than disks, the
+// empty sites are spread evenly through the lattice.
+struct HardDiskLayout {
+  std::uint64_t n = 0;
+  double eta = 0.0;   // packing fraction n·π·d²/(4·side²)
+  double side = 0.0;  // the periodic box is [0, side) × [0, side)
+  std::uint64_t columns = 0;
+  std::uint64_t rows = 0;
+  double nearest = 0.0;  // the smallest distance between two sites, images included
+  // The largest packing fraction at which this lattice still holds n disks: the lattice scales
+  // with the box, so that is eta·nearest²/d².
+  double densest_eta = 0.0;
+
+  [[nodiscard]] bool box_wide_enough() const {
+    return side > kMinPeriodicSideInDiameters * kDiskDiameter;
+  }
+  [[nodiscard]] bool disks_fit() const { return nearest >= kDiskDiameter * (1.0 + kLatticeSlack); }
+};
+
+// The box for n disks at packing fraction eta (1 <= n < 2^31, 0 < eta), and of the triangular
+// lattices with at least n sites that tile it, the one whose sites lie farthest apart. Whether the
+// disks fit is for the caller to check (box_wide_enough, disks_fit).
+[[nodiscard]] HardDiskLayout hard_disk_layout(std::uint64_t n, double eta);
+
+// The world of the scene: the layout must fit (both checks above true). Velocity components are
+// drawn from a normal distribution with standard deviation 1 by std::mt19937_64(seed) (x then y,
+// ball by ball in lattice order; the values depend on the standard library's
+// normal_distribution), then the mean velocity is subtracted from every ball, so the total
+// momentum is zero up to rounding. The mean comes from a first pass over the same random
+// sequence: nothing but the world is allocated, so a caller can measure the world's memory
+// around this call.
+[[nodiscard]] World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed);
+
+}  // namespace carom::cli

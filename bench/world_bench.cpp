@@ -1,0 +1,163 @@
+// carom benchmarks: the event-driven world (carom::World).
+// - BM_WorldHardDisks: collisions per second in a gas of equal hard disks in a periodic box, the
+//   scene of `carom bench` (apps/carom/hard_disk_setup.hpp), at N = 10⁴ and 10⁵ and packing
+//   fractions 0.3 and 0.6. N = 10⁶ takes minutes (its setup alone is about 15 s), so it is
+//   registered only when the environment variable CAROM_BENCH_WORLD_LARGE is set (to anything).
+// - BM_WorldGameStep: a game's frame, 10⁴ balls of mixed sizes in a closed box stepped at 60
+//   steps per second; the mean step time and the worst.
+// The figures and what they mean: docs/performance.md, "World (issue 3)".
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <random>
+
+#include "carom/world.hpp"
+#include "hard_disk_setup.hpp"
+
+namespace carom::bench {
+namespace {
+
+// ---- the hard-disk gas ----------------------------------------------------------------------
+
+constexpr std::uint64_t kGasSeed = 1;  // as `carom bench`'s default
+// Untimed collisions per disk before timing, as `carom bench`'s default: the lattice melts, and
+// the grid's rebuild and the first prediction of every ball are done.
+constexpr std::uint64_t kEquilibrationPerBall = 2;
+
+// The last gas benchmarked, kept so that Google Benchmark's several calls of one benchmark (to
+// choose the iteration count, and per repetition) set it up once. It keeps running from where it
+// was: an equilibrated gas stays equilibrated.
+struct CachedGas {
+  std::uint64_t n = 0;
+  std::int64_t eta_percent = 0;
+  std::unique_ptr<World> world;
+};
+
+World* gas(std::uint64_t n, std::int64_t eta_percent) {
+  static CachedGas cached;
+  if (cached.world && cached.n == n && cached.eta_percent == eta_percent) {
+    return cached.world.get();
+  }
+  cached.world.reset();  // free the old one before building the new
+  const cli::HardDiskLayout layout =
+      cli::hard_disk_layout(n, static_cast<double>(eta_percent) / 100.0);
+  if (!layout.box_wide_enough() || !layout.disks_fit()) return nullptr;
+  cached.world = std::make_unique<World>(cli::make_hard_disk_world(layout, kGasSeed));
+  cached.world->run_collisions(kEquilibrationPerBall * n);
+  cached.n = n;
+  cached.eta_percent = eta_percent;
+  return cached.world.get();
+}
+
+// One iteration resolves N collisions (one per disk); items are collisions, so items_per_second
+// is collisions per (CPU) second. energy_drift: the relative change of the kinetic energy over
+// the timed iterations of this run.
+void BM_WorldHardDisks(benchmark::State& state) {
+  const auto n = static_cast<std::uint64_t>(state.range(0));
+  World* world = gas(n, state.range(1));
+  if (world == nullptr) {
+    state.SkipWithError("the triangular lattice cannot hold this gas");
+    return;
+  }
+  const double energy_before = world->kinetic_energy();
+  std::uint64_t collisions = 0;
+  for (auto _ : state) {
+    collisions += world->run_collisions(n);
+  }
+  if (collisions != n * static_cast<std::uint64_t>(state.iterations())) {
+    state.SkipWithError("the world resolved fewer collisions than asked for");
+    return;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(collisions));
+  state.counters["energy_drift"] = (world->kinetic_energy() - energy_before) / energy_before;
+}
+
+void gas_sizes(benchmark::internal::Benchmark* registered) {
+  registered->ArgNames({"n", "eta_percent"});
+  for (const std::int64_t eta_percent : {30, 60}) {
+    for (const std::int64_t n : {10'000, 100'000}) registered->Args({n, eta_percent});
+    if (std::getenv("CAROM_BENCH_WORLD_LARGE") != nullptr) {
+      registered->Args({1'000'000, eta_percent});
+    }
+  }
+}
+BENCHMARK(BM_WorldHardDisks)->Apply(gas_sizes)->Unit(benchmark::kMillisecond);
+
+// ---- a game's frame -----------------------------------------------------------------------
+
+constexpr std::uint32_t kGameSide = 100;  // 100 × 100 = 10⁴ balls
+constexpr double kGameMinRadius = 0.3;
+constexpr double kGameMaxRadius = 0.7;
+// Lattice spacing: the largest diameter and a little room, so no two balls start in contact.
+constexpr double kGameSpacing = 2.0 * kGameMaxRadius + 0.1;
+// Velocity components' standard deviation, in length units per second: a ball of diameter 1
+// crosses about five diameters a second, some 0.1 per frame.
+constexpr double kGameSpeed = 5.0;
+constexpr double kFramesPerSecond = 60.0;
+constexpr int kWarmUpFrames = 60;  // one second of game time, not timed
+constexpr std::uint64_t kGameSeed = 2;
+
+// 10⁴ balls with radii uniform in [0.3, 0.7] and masses in proportion to their areas (a ball of
+// radius 0.5 weighs 1), elastic so that the load stays the same from frame to frame, on a square
+// lattice in a closed box 150 × 150 (packing fraction about 0.37).
+World game_world() {
+  const double side = kGameSpacing * kGameSide;
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {side, side};
+  World world(def);
+  std::mt19937_64 random(kGameSeed);
+  std::uniform_real_distribution<double> radius(kGameMinRadius, kGameMaxRadius);
+  std::normal_distribution<double> speed(0.0, kGameSpeed);
+  for (std::uint32_t row = 0; row < kGameSide; ++row) {
+    for (std::uint32_t column = 0; column < kGameSide; ++column) {
+      BallDef ball;
+      ball.position = {(column + 0.5) * kGameSpacing, (row + 0.5) * kGameSpacing};
+      ball.radius = radius(random);
+      ball.mass = (ball.radius / 0.5) * (ball.radius / 0.5);
+      const double vx = speed(random);
+      const double vy = speed(random);
+      ball.velocity = {vx, vy};
+      world.add_ball(ball);
+    }
+  }
+  return world;
+}
+
+// One iteration is one frame, world.step(1/60), timed by hand with std::chrono::steady_clock:
+// the benchmark's time is the mean frame, the counter worst_step_ms the slowest frame of the run,
+// contacts_per_step the mean number of contacts a frame resolves.
+void BM_WorldGameStep(benchmark::State& state) {
+  static World world = [] {
+    World w = game_world();
+    for (int frame = 0; frame < kWarmUpFrames; ++frame) w.step(1.0 / kFramesPerSecond);
+    return w;
+  }();
+  double worst = 0.0;
+  double total = 0.0;
+  std::uint64_t contacts = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    world.step(1.0 / kFramesPerSecond);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(seconds);
+    worst = std::max(worst, seconds);
+    total += seconds;
+    contacts += world.contacts().size();
+  }
+  const auto frames = static_cast<double>(state.iterations());
+  state.counters["mean_step_ms"] = total / frames * 1e3;
+  state.counters["worst_step_ms"] = worst * 1e3;
+  state.counters["contacts_per_step"] = static_cast<double>(contacts) / frames;
+}
+BENCHMARK(BM_WorldGameStep)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace carom::bench

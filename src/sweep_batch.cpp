@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -93,7 +94,16 @@ void check_sizes(const BallPairArrays& p, std::span<double> t) {
 // Flags and counts travel as the bits of doubles, not as bools: on the x86-64 baseline (SSE2)
 // the vectoriser cannot widen a comparison of doubles to a 64-bit integer, and a bool summed
 // per pair makes gcc branch. Integer and, or, shift and subtract vectorise everywhere.
-[[nodiscard]] std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+[[nodiscard]] std::uint64_t bits(double x) {
+#if defined(__cpp_lib_bit_cast)
+  return std::bit_cast<std::uint64_t>(x);
+#else
+  // The libc++ of Debian's emscripten 3.1.6 (the wasm preset) has no std::bit_cast yet.
+  std::uint64_t out = 0;
+  std::memcpy(&out, &x, sizeof out);
+  return out;
+#endif
+}
 
 // The sign bit is set when x is infinite or NaN: x − x is +0 for a finite x and NaN otherwise,
 // and a NaN has every exponent bit set, the highest of which the shift moves into the sign.

@@ -1,0 +1,231 @@
+// "Many balls": a carom::World in a box, advanced 1/60 time unit per frame and drawn on a canvas.
+// The world, the dragging and every number shown come from carom (carom::web::DrawnWorld).
+import {attempt, carom} from './carom.js';
+import {num, vec} from './format.js';
+import {BOX_SIZE, sceneSources} from './scene_sources.js';
+import {fillReadout, slider} from './sliders.js';
+
+const FRAME_TIME = 1 / 60;  // simulated time per frame
+const COUNTS = [10, 30, 100, 300, 1000, 3000, 10000, 20000, 50000];
+const RATE_WINDOW = 1;      // time units over which collisions per time unit are counted
+const STATS_KEPT = 600;     // frames of timings kept for the benchmark (web/bench)
+const SPEED_COLOURS = ['#1e88e5', '#43a047', '#fdd835', '#fb8c00', '#e53935'];
+
+const canvas = document.getElementById('box');
+const context = canvas.getContext('2d', {alpha: false});
+const sceneSelect = document.getElementById('scene');
+for (const source of sceneSources) sceneSelect.add(new Option(source.label, source.id));
+
+const params = new URLSearchParams(location.search);
+const countInput = document.getElementById('count');
+if (params.has('n')) {
+  const wanted = Number(params.get('n'));
+  const index = COUNTS.findIndex((c) => c >= wanted);
+  countInput.value = String(index < 0 ? COUNTS.length - 1 : index);
+}
+const countOut = document.getElementById('count-out');
+const showCount = () => { countOut.textContent = String(COUNTS[Number(countInput.value)]); };
+slider('count', () => { showCount(); rebuild(); });
+showCount();
+let currentSpeed = Number(document.getElementById('speed').value);
+const speed = slider('speed', (s) => {
+  attempt(() => world.scale_speeds(s / currentSpeed));
+  currentSpeed = s;
+});
+// carom::World fixes a ball's restitution when the ball is added, so a new e starts the scene
+// again (re-adding the balls where they are could fail: after a contact two balls touch, and a
+// rounding may count that as an overlap).
+const restitution = slider('restitution', rebuild);
+
+let world = null;
+let running = params.get('paused') !== '1';
+let held = -1;
+let history = [];  // [time, collision count] per frame, for the rate
+let frames = 0;
+let lastFrameStart = null;
+// Timings of recent frames, in milliseconds: the step, the drawing, and the interval between
+// frames as the browser schedules them. Read by web/bench/frame_times.mjs.
+const stats = {step: [], draw: [], interval: []};
+window.caromFrameStats = stats;
+
+function keep(list, value) {
+  list.push(value);
+  if (list.length > STATS_KEPT) list.shift();
+}
+
+function rebuild() {
+  const source = sceneSources.find((s) => s.id === sceneSelect.value);
+  const built = attempt(() => source.build(carom, {
+    count: COUNTS[Number(countInput.value)], speed: speed.value, restitution: restitution.value,
+  }));
+  if (!built) return;
+  if (world) world.delete();
+  world = built;
+  currentSpeed = speed.value;
+  held = -1;
+  history = [];
+  for (const key of Object.keys(stats)) stats[key].length = 0;
+  draw();
+  report();
+}
+
+// ---- drawing -------------------------------------------------------------------------------
+
+function resize() {
+  const ratio = window.devicePixelRatio || 1;
+  const width = Math.round(canvas.clientWidth * ratio);
+  const height = Math.round(width * BOX_SIZE.y / BOX_SIZE.x);
+  if (canvas.width !== width || canvas.height !== height) {
+    canvas.width = width;
+    canvas.height = height;
+  }
+}
+
+function draw() {
+  resize();
+  const scale = canvas.width / BOX_SIZE.x;
+  context.fillStyle = '#fafafa';
+  context.fillRect(0, 0, canvas.width, canvas.height);
+  context.lineWidth = Math.max(1, scale * 0.15);
+  context.strokeStyle = '#333';
+  for (const s of world.segments()) {
+    context.beginPath();
+    context.moveTo(s.a.x * scale, s.a.y * scale);
+    context.lineTo(s.b.x * scale, s.b.y * scale);
+    context.stroke();
+  }
+  for (const a of world.arcs()) {
+    context.beginPath();
+    context.arc(a.center.x * scale, a.center.y * scale, a.radius * scale, a.start_angle,
+                a.end_angle);
+    context.stroke();
+  }
+  // x, y, radius, speed per ball; one path per speed band keeps the fill calls few.
+  const balls = world.snapshot();
+  const bands = SPEED_COLOURS.map(() => new Path2D());
+  const top = 2 * currentSpeed;
+  for (let i = 0; i < balls.length; i += 4) {
+    const x = balls[i] * scale;
+    const y = balls[i + 1] * scale;
+    const r = balls[i + 2] * scale;
+    const band = Math.min(SPEED_COLOURS.length - 1,
+                          Math.floor(balls[i + 3] / top * SPEED_COLOURS.length));
+    bands[band].moveTo(x + r, y);
+    bands[band].arc(x, y, r, 0, 2 * Math.PI);
+  }
+  bands.forEach((path, i) => {
+    context.fillStyle = SPEED_COLOURS[i];
+    context.fill(path);
+  });
+  if (held >= 0) {
+    const p = world.position(held);
+    context.beginPath();
+    context.arc(p.x * scale, p.y * scale, balls[4 * held + 2] * scale + 2, 0, 2 * Math.PI);
+    context.strokeStyle = '#000';
+    context.lineWidth = 2;
+    context.stroke();
+  }
+  context.strokeStyle = '#333';
+  context.lineWidth = 2;
+  context.strokeRect(1, 1, canvas.width - 2, canvas.height - 2);
+}
+
+// ---- the readout -----------------------------------------------------------------------------
+
+function report() {
+  const time = world.time();
+  const count = world.collision_count();
+  history.push([time, count]);
+  while (history.length > 2 && history[1][0] <= time - RATE_WINDOW) history.shift();
+  const [then, countThen] = history[0];
+  const mean = (list) => list.length ? list.reduce((s, v) => s + v, 0) / list.length : NaN;
+  const recent = (list) => list.slice(-60);
+  fillReadout({
+    balls: String(world.ball_count()),
+    time: time.toFixed(3),
+    collisions: String(count),
+    rate: time > then ? num((count - countThen) / (time - then), 4) : '—',
+    // Ten digits: for e = 1 the energy is conserved to rounding (about 10⁻¹³ relative), so
+    // every digit shown must stay put.
+    energy: num(world.kinetic_energy(), 10),
+    momentum: vec(world.momentum(), 4),
+    step_ms: num(mean(recent(stats.step)), 3),
+    draw_ms: num(mean(recent(stats.draw)), 3),
+    frame_ms: num(mean(recent(stats.interval)), 3),
+  });
+}
+
+// ---- running -----------------------------------------------------------------------------
+
+function advance() {
+  const start = performance.now();
+  attempt(() => world.step(FRAME_TIME));
+  keep(stats.step, performance.now() - start);
+}
+
+function frame(now) {
+  if (lastFrameStart !== null && running) keep(stats.interval, now - lastFrameStart);
+  lastFrameStart = now;
+  if (running && world) {
+    advance();
+    const start = performance.now();
+    draw();
+    keep(stats.draw, performance.now() - start);
+    // The text changes a few times a second: often enough to read, rarely enough to cost nothing.
+    if (++frames % 6 === 0) report();
+  }
+  requestAnimationFrame(frame);
+}
+
+const pauseButton = document.getElementById('pause');
+function setRunning(on) {
+  running = on;
+  pauseButton.textContent = on ? 'Pause' : 'Run';
+  if (!on) report();
+}
+pauseButton.addEventListener('click', () => setRunning(!running));
+document.getElementById('step').addEventListener('click', () => {
+  setRunning(false);
+  advance();
+  draw();
+  report();
+});
+document.getElementById('reset').addEventListener('click', rebuild);
+sceneSelect.addEventListener('change', rebuild);
+
+// ---- dragging --------------------------------------------------------------------------------
+
+function worldPoint(event) {
+  const box = canvas.getBoundingClientRect();
+  return {x: (event.clientX - box.left) / box.width * BOX_SIZE.x,
+          y: (event.clientY - box.top) / box.height * BOX_SIZE.y};
+}
+
+canvas.addEventListener('pointerdown', (event) => {
+  const index = attempt(() => world.ball_at(worldPoint(event)));
+  if (index === undefined || index < 0) return;
+  event.preventDefault();
+  canvas.setPointerCapture(event.pointerId);
+  held = index;
+  attempt(() => world.hold(held));
+  draw();
+});
+canvas.addEventListener('pointermove', (event) => {
+  if (held < 0) return;
+  attempt(() => world.drag_to(held, worldPoint(event)));
+  if (!running) draw();
+});
+const letGo = () => {
+  if (held < 0) return;
+  attempt(() => world.release(held));
+  held = -1;
+  if (!running) draw();
+};
+canvas.addEventListener('pointerup', letGo);
+canvas.addEventListener('pointercancel', letGo);
+window.addEventListener('resize', () => { if (world) draw(); });
+
+rebuild();
+setRunning(running);
+requestAnimationFrame(frame);
+document.body.dataset.ready = 'true';

@@ -10,7 +10,7 @@ const state = {
   ball: {center: {x: 0, y: 0}, radius: 0.8},
   move: {x: 9, y: 1},
   segments: [{a: {x: 6, y: -3}, b: {x: 6, y: 3}}, {a: {x: -1, y: 5}, b: {x: 5, y: 6.5}}],
-  arcs: [{center: {x: 9, y: 1}, radius: 3, start_angle: -Math.PI / 2, end_angle: Math.PI / 2}],
+  arcs: [{center: {x: 10, y: 1}, radius: 3, start_angle: -Math.PI / 2, end_angle: Math.PI / 2}],
 };
 
 const scene = new carom.WallsScene();

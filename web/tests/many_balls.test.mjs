@@ -1,0 +1,124 @@
+// "Many balls": 10 time units of the box, read from the page's own readout: energy stays put for
+// e = 1 and drops for e < 1, the collision count grows; dragging a ball (mouse and touch) never
+// makes it overlap another ball or leave the box.
+import assert from 'node:assert/strict';
+import {after, before, test} from 'node:test';
+
+import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {touchDrag} from './drag.mjs';
+
+// At 60 frames a second 10 time units take 10 s; a loaded machine may give fewer frames.
+const RUN_TIMEOUT_MS = 120000;
+
+let session;
+before(async () => { session = await openBrowser(); });
+after(async () => { await session?.close(); });
+
+async function waitForTime(page, time) {
+  await page.waitForFunction(
+      (t) => Number(document.querySelector('[data-readout="time"]').textContent) >= t, time,
+      {timeout: RUN_TIMEOUT_MS, polling: 100});
+}
+
+const count = async (page) => Number(await readout(page, 'collisions'));
+
+async function setSlider(page, id, value) {
+  await page.evaluate(({id, value}) => {
+    const input = document.getElementById(id);
+    input.value = String(value);
+    input.dispatchEvent(new Event('input', {bubbles: true}));
+  }, {id, value});
+}
+
+test('e = 1: over 10 time units the energy stays constant and collisions keep coming',
+     {timeout: RUN_TIMEOUT_MS + 20000}, async () => {
+  const {page, problems} = await openPage(session, 'many-balls.html?n=300');
+  assert.equal(await readout(page, 'balls'), '300');
+  const energyAtStart = await readout(page, 'energy');
+  // Every ball starts with speed 10 and mass 1: E = 300 · 10² / 2.
+  assert.equal(Number(energyAtStart), 15000);
+  await waitForTime(page, 5);
+  const halfway = await count(page);
+  await waitForTime(page, 10);
+  const atEnd = await count(page);
+  assert.ok(halfway > 0, 'collisions happen');
+  assert.ok(atEnd > halfway, `the count grows: ${halfway} then ${atEnd}`);
+  // Ten significant digits shown; the world conserves energy to rounding (~10⁻¹³ relative).
+  assert.equal(await readout(page, 'energy'), energyAtStart);
+  await page.screenshot({path: `${OUTPUT}/many-balls-10s.png`});
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('e = 0.5: the energy drops', {timeout: RUN_TIMEOUT_MS}, async () => {
+  const {page, problems} = await openPage(session, 'many-balls.html?n=300');
+  await setSlider(page, 'restitution', 0.5);
+  await page.waitForFunction(
+      () => Number(document.querySelector('[data-readout="time"]').textContent) < 1);
+  const energyAtStart = Number(await readout(page, 'energy'));
+  await waitForTime(page, 3);
+  const energy = Number(await readout(page, 'energy'));
+  assert.ok(energy < 0.9 * energyAtStart, `energy ${energyAtStart} then ${energy}`);
+  assert.ok(await count(page) > 0);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+// The ball's place on the screen.
+async function ballOnScreen(page, index) {
+  return page.evaluate((i) => {
+    const {world, BOX_SIZE} = window.caromPlayground;
+    const p = world.position(i);
+    const box = document.getElementById('box').getBoundingClientRect();
+    return {x: box.left + p.x / BOX_SIZE.x * box.width, y: box.top + p.y / BOX_SIZE.y * box.height};
+  }, index);
+}
+
+const audit = (page) => page.evaluate(() => window.caromPlayground.world.audit());
+const position = (page, i) => page.evaluate((j) => window.caromPlayground.world.position(j), i);
+
+test('a dragged ball stops at the first ball or wall in its way', async () => {
+  const {page, problems} = await openPage(session, 'many-balls.html?n=300&paused=1');
+  const before = await position(page, 0);
+  const start = await ballOnScreen(page, 0);
+  const box = await page.evaluate(() => {
+    const r = document.getElementById('box').getBoundingClientRect();
+    return {right: r.right, bottom: r.bottom};
+  });
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  // Through the crowd towards (and past) the far corner, checking after every move.
+  const steps = 25;
+  for (let i = 1; i <= steps; ++i) {
+    await page.mouse.move(start.x + (box.right + 20 - start.x) * i / steps,
+                          start.y + (box.bottom + 20 - start.y) * i / steps);
+    assert.equal(await audit(page), '', `after move ${i}`);
+  }
+  await page.mouse.up();
+  const moved = await position(page, 0);
+  assert.ok(Math.hypot(moved.x - before.x, moved.y - before.y) > 1, 'the ball moved');
+  await page.click('#check');
+  assert.match(await page.textContent('#audit'), /^No two balls overlap/);
+  await page.screenshot({path: `${OUTPUT}/many-balls-dragged.png`});
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a ball can be dragged with a finger', async () => {
+  const context = await session.browser.newContext({hasTouch: true,
+                                                    viewport: {width: 390, height: 844}});
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  page.on('pageerror', (e) => problems.push(e.message));
+  await page.goto(`${session.base}many-balls.html?n=10&paused=1`);
+  await page.waitForSelector('body[data-ready="true"]');
+  const before = await position(page, 0);
+  const start = await ballOnScreen(page, 0);
+  await touchDrag(page, start, {x: start.x + 30, y: start.y + 30});
+  const after = await position(page, 0);
+  assert.ok(Math.hypot(after.x - before.x, after.y - before.y) > 1, 'the ball moved');
+  assert.equal(await audit(page), '');
+  assert.deepEqual(problems, []);
+  await context.close();
+});

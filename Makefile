@@ -2,6 +2,7 @@
 #   make run    install what is missing, build, run the default two-ball case, draw it
 #   make test   install what is missing, then everything CI checks
 # More: make bench (core benchmarks, optimised build), make format, make lint, make clean.
+# Browser playground: make playground (serve it), make test-web, make bench-web.
 
 SHELL := /bin/bash
 .ONESHELL:
@@ -16,6 +17,7 @@ RUN_PICTURE := build/two-moving-balls.svg
 CAROM := build/release/apps/carom/carom
 
 .PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
+.PHONY: wasm playground test-web bench-web
 
 all: run
 
@@ -41,7 +43,10 @@ run: deps
 	echo
 	echo "The picture of this case is in $(RUN_PICTURE) (open it in a browser)."
 
-test: deps test-dev test-clang test-asan format-check lint
+# The browser tests need chromium (and emscripten, node-acorn, npm); .ci/run installs them.
+TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
+
+test: deps test-dev test-clang test-asan format-check lint $(TEST_WEB)
 	echo "make test: all checks passed"
 
 test-dev:
@@ -81,6 +86,41 @@ lint: deps
 	# clang-tidy counts the warnings it suppressed in system headers on stderr; only findings matter.
 	git ls-files -- 'src/*.cpp' 'apps/*.cpp' \
 	  | xargs -P 2 -n 4 clang-tidy -p build/dev --quiet 2> >(grep -v 'warnings generated' >&2)
+
+# ---- the browser playground (web/) ----
+# Debian's emscripten needs NODE_PATH to find acorn for its optimiser, and a writable cache: the
+# packaged one (prebuilt system libraries) when it is writable, otherwise one under build/.
+WASM_ENV = NODE_PATH=/usr/share/nodejs $$([ -w "$$(em-config CACHE 2>/dev/null)" ] || echo EM_CACHE=$(CURDIR)/build/em-cache)
+WEB_SITE := build/wasm/web/site
+WEB_NODE_MODULES := web/node_modules/.package-lock.json
+
+wasm:
+	for tool in emcc node npm; do
+	  command -v $$tool >/dev/null || { echo "carom: $$tool is missing; install it with:"; \
+	    echo "  sudo apt-get install -y emscripten node-acorn nodejs npm"; exit 1; }
+	done
+	env $(WASM_ENV) cmake --preset wasm >/dev/null
+	env $(WASM_ENV) cmake --build --preset wasm
+
+# playwright-core, exactly as web/package-lock.json pins it (node_modules is not committed).
+$(WEB_NODE_MODULES): web/package.json web/package-lock.json
+	cd web && npm ci --no-audit --no-fund
+
+# Serves the playground on http://127.0.0.1:8080 with web/serve.mjs (Node's standard library only).
+playground: wasm
+	node web/serve.mjs $(WEB_SITE) 8080
+
+# End-to-end tests in Debian's chromium; screenshots go to build/web-test-output/. The native
+# carom CLI is the reference the "Two moving balls" page is compared with.
+test-web: deps wasm $(WEB_NODE_MODULES)
+	test -x /usr/bin/chromium || { echo "carom: chromium is missing: sudo apt-get install -y chromium"; exit 1; }
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_cli
+	cd web && CAROM_CLI=$(CURDIR)/$(CAROM) node --test --test-concurrency=1 tests/
+
+# Frame times of "Many balls" with 10⁴ balls (and 10³ beside it) in headless chromium.
+bench-web: wasm $(WEB_NODE_MODULES)
+	node web/bench/frame_times.mjs 10000 1000
 
 clean:
 	rm -rf build

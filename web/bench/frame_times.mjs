@@ -14,7 +14,8 @@ const args = process.argv.slice(2);
 const json = args.includes('--json');
 const secondsAt = args.indexOf('--seconds');
 const seconds = secondsAt >= 0 ? Number(args[secondsAt + 1]) : 10;
-const counts = args.filter((a, i) => /^\d+$/.test(a) && i !== secondsAt + 1).map(Number);
+const counts = args.filter((a, i) => /^\d+$/.test(a) && (secondsAt < 0 || i !== secondsAt + 1))
+                   .map(Number);
 if (counts.length === 0) counts.push(10000);
 const WARM_UP_MS = 2000;  // the lattice start melts and the JIT settles before timing
 const FRAME_BUDGET_MS = 1000 / 60;

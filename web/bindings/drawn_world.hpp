@@ -2,8 +2,8 @@
 // was given (the World keeps no list of their shapes), its balls in the order they were added,
 // and a flat buffer of their positions that JavaScript reads without a call per ball.
 //
-// Pages build one either from a generator (box_filling.hpp) or shape by shape (add_ball,
-// add_segment, add_arc), which is how a scene file's contents can be handed over.
+// Pages build one shape by shape (add_ball, add_segment, add_arc) and fill it with generated
+// balls (lattice_filling.hpp); a scene file's contents can be handed over the same way.
 #pragma once
 
 #include <cstdint>

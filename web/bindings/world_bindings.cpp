@@ -2,9 +2,9 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include "box_filling.hpp"
 #include "drawn_world.hpp"
 #include "js_error.hpp"
+#include "lattice_filling.hpp"
 
 namespace carom::web {
 namespace {
@@ -13,8 +13,8 @@ DrawnWorld* make_world(const WorldDef& def) {
   return guarded_call([&] { return new DrawnWorld(def); });
 }
 
-DrawnWorld* make_filled_box(const BoxFilling& filling) {
-  return guarded_call([&] { return new DrawnWorld(fill_box(filling)); });
+int fill(DrawnWorld& w, const LatticeFilling& filling) {
+  return guarded_call([&] { return fill_lattice(w, filling); });
 }
 
 int add_ball(DrawnWorld& w, Vec2 position, Vec2 velocity, double radius, double mass) {
@@ -93,20 +93,18 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .field("restitution", &WorldDef::restitution)
       .field("collapse_time", &WorldDef::collapse_time)
       .field("cell_size", &WorldDef::cell_size);
-  value_object<BoxFilling>("BoxFilling")
-      .field("count", &BoxFilling::count)
-      .field("size", &BoxFilling::size)
-      .field("packing_fraction", &BoxFilling::packing_fraction)
-      .field("speed", &BoxFilling::speed)
-      .field("restitution", &BoxFilling::restitution)
-      .field("seed", &BoxFilling::seed);
+  value_object<LatticeFilling>("LatticeFilling")
+      .field("count", &LatticeFilling::count)
+      .field("packing_fraction", &LatticeFilling::packing_fraction)
+      .field("speed", &LatticeFilling::speed)
+      .field("seed", &LatticeFilling::seed);
 
   emscripten::class_<DrawnWorld>("DrawnWorld")
       .constructor(&make_world, emscripten::allow_raw_pointers())
-      .class_function("filled_box", &make_filled_box, emscripten::allow_raw_pointers())
       .function("add_ball", &add_ball)
       .function("add_segment", &add_segment)
       .function("add_arc", &add_arc)
+      .function("fill_lattice", &fill)
       .function("step", &step)
       .function("scale_speeds", &scale_speeds)
       .function("ball_at", &ball_at)

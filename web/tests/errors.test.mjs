@@ -30,15 +30,19 @@ test('a bad radius is a JavaScript Error naming the argument and value', async (
   await page.close();
 });
 
-test('a world that cannot be filled says why', async () => {
+test('a lattice too dense for its box says why', async () => {
   const {page, problems} = await openPage(session, 'index.html');
   const message = await page.evaluate(async () => {
     const {carom} = await import('./js/carom.js');
+    const world = new carom.DrawnWorld({boundary: carom.Boundary.box, lower: {x: 0, y: 0},
+                                        upper: {x: 10, y: 10}, restitution: 1,
+                                        collapse_time: 0, cell_size: 0});
     try {
-      carom.DrawnWorld.filled_box({count: 100, size: {x: 10, y: 10}, packing_fraction: 0.9,
-                                   speed: 1, restitution: 1, seed: 1});
+      world.fill_lattice({count: 100, packing_fraction: 0.9, speed: 1, seed: 1});
     } catch (error) {
       return error.message;
+    } finally {
+      world.delete();
     }
     return 'no error';
   });

@@ -67,10 +67,11 @@ test('e = 0.5: the energy drops', {timeout: RUN_TIMEOUT_MS}, async () => {
 // The ball's place on the screen.
 async function ballOnScreen(page, index) {
   return page.evaluate((i) => {
-    const {world, BOX_SIZE} = window.caromPlayground;
+    const {world, view} = window.caromPlayground;
     const p = world.position(i);
     const box = document.getElementById('box').getBoundingClientRect();
-    return {x: box.left + p.x / BOX_SIZE.x * box.width, y: box.top + p.y / BOX_SIZE.y * box.height};
+    return {x: box.left + (p.x - view.x) / view.width * box.width,
+            y: box.top + (p.y - view.y) / view.height * box.height};
   }, index);
 }
 
@@ -121,4 +122,24 @@ test('a ball can be dragged with a finger', async () => {
   assert.equal(await audit(page), '');
   assert.deepEqual(problems, []);
   await context.close();
+});
+
+test('the scene with walls and arcs runs, leaves no overlap and keeps its energy',
+     {timeout: RUN_TIMEOUT_MS}, async () => {
+  const {page, problems} = await openPage(session, 'many-balls.html?n=1000');
+  await page.selectOption('#scene', 'obstacles');
+  await page.waitForFunction(
+      () => Number(document.querySelector('[data-readout="time"]').textContent) < 1);
+  // Lattice sites on a wall, a bumper or the cup stay empty.
+  const balls = Number(await readout(page, 'balls'));
+  assert.ok(balls > 800 && balls < 1000, `${balls} balls`);
+  const energyAtStart = await readout(page, 'energy');
+  assert.equal(Number(energyAtStart), balls * 10 * 10 / 2);
+  await waitForTime(page, 3);
+  assert.equal(await readout(page, 'energy'), energyAtStart);
+  assert.ok(await count(page) > 0);
+  assert.equal(await audit(page), '');
+  await page.screenshot({path: `${OUTPUT}/many-balls-walls.png`});
+  assert.deepEqual(problems, []);
+  await page.close();
 });

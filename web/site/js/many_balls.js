@@ -3,7 +3,7 @@
 import {attempt, carom} from './carom.js';
 import {num, vec} from './format.js';
 import {DiscRaster, packColour} from './disc_raster.js';
-import {BOX_SIZE, sceneSources} from './scene_sources.js';
+import {sceneSources} from './scene_sources.js';
 import {fillReadout, slider} from './sliders.js';
 
 const FRAME_TIME = 1 / 60;  // simulated time per frame
@@ -42,6 +42,9 @@ const speed = slider('speed', (s) => {
 const restitution = slider('restitution', rebuild);
 
 let world = null;
+// The part of the world on the canvas: the box (or periodic cell), or for an open world the
+// extent of its balls and walls when it was built.
+let view = {x: 0, y: 0, width: 1, height: 1};
 let running = params.get('paused') !== '1';
 let held = -1;
 let history = [];  // [time, collision count] per frame, for the rate
@@ -65,6 +68,8 @@ function rebuild() {
   if (!built) return;
   if (world) world.delete();
   world = built;
+  view = viewOf(world);
+  canvas.style.aspectRatio = `${view.width} / ${view.height}`;
   currentSpeed = speed.value;
   held = -1;
   history = [];
@@ -75,10 +80,36 @@ function rebuild() {
 
 // ---- drawing -------------------------------------------------------------------------------
 
+const OPEN_MARGIN = 0.05;  // an open world's view reaches this fraction beyond what it holds
+
+function viewOf(w) {
+  const def = w.def();
+  if (def.boundary !== carom.Boundary.open) {
+    return {x: def.lower.x, y: def.lower.y, width: def.upper.x - def.lower.x,
+            height: def.upper.y - def.lower.y};
+  }
+  const extent = {x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity};
+  const cover = (x, y, r) => {
+    extent.x0 = Math.min(extent.x0, x - r);
+    extent.y0 = Math.min(extent.y0, y - r);
+    extent.x1 = Math.max(extent.x1, x + r);
+    extent.y1 = Math.max(extent.y1, y + r);
+  };
+  const balls = w.snapshot();
+  for (let i = 0; i < balls.length; i += 4) cover(balls[i], balls[i + 1], balls[i + 2]);
+  for (const s of w.segments()) cover(s.a.x, s.a.y, 0), cover(s.b.x, s.b.y, 0);
+  for (const a of w.arcs()) cover(a.center.x, a.center.y, a.radius);
+  if (extent.x0 > extent.x1) return {x: -1, y: -1, width: 2, height: 2};
+  const width = extent.x1 - extent.x0 || 1;
+  const height = extent.y1 - extent.y0 || 1;
+  return {x: extent.x0 - OPEN_MARGIN * width, y: extent.y0 - OPEN_MARGIN * height,
+          width: width * (1 + 2 * OPEN_MARGIN), height: height * (1 + 2 * OPEN_MARGIN)};
+}
+
 function resize() {
   const ratio = window.devicePixelRatio || 1;
   const width = Math.round(canvas.clientWidth * ratio);
-  const height = Math.round(width * BOX_SIZE.y / BOX_SIZE.x);
+  const height = Math.round(width * view.height / view.width);
   if (canvas.width !== width || canvas.height !== height) {
     canvas.width = width;
     canvas.height = height;
@@ -87,7 +118,9 @@ function resize() {
 
 function draw() {
   resize();
-  const scale = canvas.width / BOX_SIZE.x;
+  const scale = canvas.width / view.width;
+  const px = (x) => (x - view.x) * scale;
+  const py = (y) => (y - view.y) * scale;
   // x, y, radius, speed per ball, coloured by speed.
   const balls = world.snapshot();
   const top = 2 * currentSpeed;
@@ -95,27 +128,27 @@ function draw() {
   for (let i = 0; i < balls.length; i += 4) {
     const band = Math.min(BAND_COLOURS.length - 1,
                           Math.floor(balls[i + 3] / top * BAND_COLOURS.length));
-    raster.disc(balls[i] * scale, balls[i + 1] * scale, balls[i + 2] * scale, BAND_COLOURS[band]);
+    raster.disc(px(balls[i]), py(balls[i + 1]), balls[i + 2] * scale, BAND_COLOURS[band]);
   }
   raster.end();
   context.lineWidth = Math.max(1, scale * 0.15);
   context.strokeStyle = '#333';
   for (const s of world.segments()) {
     context.beginPath();
-    context.moveTo(s.a.x * scale, s.a.y * scale);
-    context.lineTo(s.b.x * scale, s.b.y * scale);
+    context.moveTo(px(s.a.x), py(s.a.y));
+    context.lineTo(px(s.b.x), py(s.b.y));
     context.stroke();
   }
   for (const a of world.arcs()) {
     context.beginPath();
-    context.arc(a.center.x * scale, a.center.y * scale, a.radius * scale, a.start_angle,
+    context.arc(px(a.center.x), py(a.center.y), a.radius * scale, a.start_angle,
                 a.end_angle);
     context.stroke();
   }
   if (held >= 0) {
     const p = world.position(held);
     context.beginPath();
-    context.arc(p.x * scale, p.y * scale, balls[4 * held + 2] * scale + 2, 0, 2 * Math.PI);
+    context.arc(px(p.x), py(p.y), balls[4 * held + 2] * scale + 2, 0, 2 * Math.PI);
     context.strokeStyle = '#000';
     context.lineWidth = 2;
     context.stroke();
@@ -200,8 +233,8 @@ sceneSelect.addEventListener('change', rebuild);
 
 function worldPoint(event) {
   const box = canvas.getBoundingClientRect();
-  return {x: (event.clientX - box.left) / box.width * BOX_SIZE.x,
-          y: (event.clientY - box.top) / box.height * BOX_SIZE.y};
+  return {x: view.x + (event.clientX - box.left) / box.width * view.width,
+          y: view.y + (event.clientY - box.top) / box.height * view.height};
 }
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -229,7 +262,7 @@ canvas.addEventListener('pointercancel', letGo);
 window.addEventListener('resize', () => { if (world) draw(); });
 
 // For the tests (web/tests): the world, to find where a ball is before dragging it.
-window.caromPlayground = {get world() { return world; }, BOX_SIZE};
+window.caromPlayground = {get world() { return world; }, get view() { return view; }};
 
 rebuild();
 setRunning(running);

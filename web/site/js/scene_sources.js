@@ -1,22 +1,62 @@
 // Where the "Many balls" page gets its world from. Each source builds a carom::web::DrawnWorld
-// (a carom::World plus the shapes it was given, for drawing) from the page's controls.
+// (a carom::World plus the shapes it was given, for drawing) from the page's controls; the page
+// asks nothing else of a source, and draws whatever walls and arcs the world holds.
 //
 // Scene files: a source that reads a carom scene (examples/*.json, or a file dropped on the
 // page) fits here as one more entry whose build() turns the file's text into a DrawnWorld
-// (through a binding to the scene loader, carom_scene). The page asks nothing else of a source.
-export const BOX_SIZE = {x: 160, y: 100};
+// (through a binding to the scene loader, carom_scene). See docs/playground.md.
+const BOX_SIZE = {x: 160, y: 100};
 
-// Packing fraction of the generated box: dense enough for many collisions, loose enough that
+// Packing fraction of the generated balls: dense enough for many collisions, loose enough that
 // the lattice start melts within a few frames.
 const PACKING_FRACTION = 0.25;
+
+// Three or more inelastic balls can collide infinitely often in finite time; carom's TC model
+// makes a ball that collided less than this long ago bounce elastically. The balls' mean free
+// time here is of order radius / speed ~ 10⁻², so 10⁻⁴ leaves the dissipation almost untouched.
+const COLLAPSE_TIME = 1e-4;
+
+// A funnel of two segments, three round bumpers (full-circle arcs) and a cup (half an arc).
+const FUNNEL = [{a: {x: 15, y: 25}, b: {x: 68, y: 50}}, {a: {x: 145, y: 25}, b: {x: 92, y: 50}}];
+const BUMPERS = [{x: 35, y: 75}, {x: 80, y: 80}, {x: 125, y: 75}].map(
+    (center) => ({center, radius: 7, start_angle: 0, end_angle: 2 * Math.PI}));
+const CUP = {center: {x: 80, y: 22}, radius: 12, start_angle: 0, end_angle: Math.PI};
+
+function boxWorld(carom, restitution) {
+  return new carom.DrawnWorld({boundary: carom.Boundary.box, lower: {x: 0, y: 0},
+                               upper: BOX_SIZE, restitution, collapse_time: COLLAPSE_TIME,
+                               cell_size: 0});
+}
+
+// Builds with fill(world); a world left half-built by an error is freed, not leaked.
+function built(world, fill) {
+  try {
+    fill(world);
+    return world;
+  } catch (error) {
+    world.delete();
+    throw error;
+  }
+}
+
+function lattice(world, {count, speed}) {
+  world.fill_lattice({count, packing_fraction: PACKING_FRACTION, speed, seed: 1});
+}
 
 export const sceneSources = [
   {
     id: 'box',
     label: 'Box of N balls',
-    usesControls: true,
-    build: (carom, {count, speed, restitution}) => carom.DrawnWorld.filled_box({
-      count, size: BOX_SIZE, packing_fraction: PACKING_FRACTION, speed, restitution, seed: 1,
+    build: (carom, controls) => built(boxWorld(carom, controls.restitution),
+                                      (world) => lattice(world, controls)),
+  },
+  {
+    id: 'obstacles',
+    label: 'Box with walls and arcs',
+    build: (carom, controls) => built(boxWorld(carom, controls.restitution), (world) => {
+      for (const segment of FUNNEL) world.add_segment(segment);
+      for (const arc of [...BUMPERS, CUP]) world.add_arc(arc);
+      lattice(world, controls);  // sites on a wall stay empty
     }),
   },
 ];

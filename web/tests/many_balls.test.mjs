@@ -143,3 +143,21 @@ test('the scene with walls and arcs runs, leaves no overlap and keeps its energy
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('pause, single step and the speed control', async () => {
+  const {page, problems} = await openPage(session, 'many-balls.html?n=100');
+  await page.click('#pause');
+  const paused = Number(await readout(page, 'time'));
+  await page.waitForTimeout(300);
+  assert.equal(Number(await readout(page, 'time')), paused, 'paused: time stands still');
+  for (let i = 0; i < 3; ++i) await page.click('#step');
+  // Each step is one frame of 1/60 time unit; the time is shown to 3 decimals.
+  assert.equal(await readout(page, 'time'), (paused + 3 / 60).toFixed(3));
+  // Doubling every speed quadruples the kinetic energy (100 balls of mass 1 at speed 10 → 20).
+  assert.equal(Number(await readout(page, 'energy')), 5000);
+  await setSlider(page, 'speed', 20);
+  await page.click('#step');
+  assert.equal(Number(await readout(page, 'energy')), 20000);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -7,6 +7,9 @@ const SVG_NS = 'http://www.w3.org/2000/svg';
 const SNAP = 10;  // per length unit: 0.1
 export const snap = (value) => Math.round(value * SNAP) / SNAP;
 
+// The smallest handle on the screen, in CSS pixels: a fingertip covers about 30.
+const MIN_HANDLE_RADIUS_PX = 15;
+
 function element(name, attributes, parent) {
   const node = document.createElementNS(SVG_NS, name);
   for (const [key, value] of Object.entries(attributes)) node.setAttribute(key, value);
@@ -111,7 +114,8 @@ export class Figure {
       const at = get();
       node.setAttribute('cx', at.x);
       node.setAttribute('cy', at.y);
-      node.setAttribute('r', radius());
+      const pixelsPerUnit = this.svg.getScreenCTM()?.a || 1;
+      node.setAttribute('r', Math.max(radius(), MIN_HANDLE_RADIUS_PX / pixelsPerUnit));
     };
     return {place};
   }

@@ -105,5 +105,7 @@ function show(f) {
   fillReadout(texts);
 }
 
+// Handles keep a finger's size on screen, so they are sized again when the layout changes.
+window.addEventListener('resize', redraw);
 redraw();
 document.body.dataset.ready = 'true';

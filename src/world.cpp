@@ -265,6 +265,20 @@ std::uint64_t World::run_collisions(std::uint64_t count) {
   return impl_->run(std::numeric_limits<double>::infinity(), count);
 }
 
+std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
+  constexpr const char* kFunction = "World::run_collisions";
+  if (std::isnan(time_limit)) refuse(kFunction, "time_limit", "nan", "must be a number");
+  if (time_limit < impl_->time) {
+    refuse(kFunction, "time_limit", number(time_limit),
+           "must not be before the world's time " + number(impl_->time));
+  }
+  if (count == 0) {
+    impl_->contacts.clear();
+    return 0;
+  }
+  return impl_->run(time_limit, count);
+}
+
 void World::set_stop_condition(std::function<bool(const ContactEvent&)> condition) {
   impl_->stop_condition = std::move(condition);
 }

@@ -105,6 +105,9 @@ struct World::Impl {
   void synchronize(double t);
   // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts.
   std::uint64_t run(double end, std::uint64_t max_contacts);
+  // True only when no contact can ever happen again, by the rules in world_no_contact.cpp;
+  // false means "not proven", not "a contact will happen".
+  [[nodiscard]] bool no_contact_ever() const;
   bool process(const detail::Event& event);  // true when a contact was resolved
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);

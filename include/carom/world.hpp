@@ -127,7 +127,27 @@ class World {
   // Resolves the next `count` contacts (ball–ball and ball–wall) and stops right after the last;
   // returns how many it resolved (fewer only when no contact will ever happen or the stop
   // condition fired).
+  //
+  // "No contact will ever happen" is noticed in two ways. No pending event at all (every ball at
+  // rest, say): it returns at once. Otherwise, after a stretch of events without a contact (cell
+  // crossings: at least 64, and at least 2 per ball, doubling after each failed try) it tries to
+  // prove it, and returns when it can, with time() at the last event processed. It can prove it
+  // - in an open world or a box: when every pair of balls (one at least movable) is moving apart
+  //   or not moving relative to each other, every ball is moving away from every segment's
+  //   nearest point, and every ball is outside each arc's full circle by more than its radius
+  //   and moving away from its centre (distances to convex sets then grow for ever);
+  // - in a periodic world without walls: when every such pair either has no relative velocity
+  //   at all, or moves relative to the other along one axis only with the minimum-image gap
+  //   across that axis wider than the two radii (plus 10⁻⁹ of the period). So fewer than two
+  //   balls, or all at one velocity, always qualify.
+  // Other cases cannot be proved in general: two balls in a periodic cell that move relative to
+  // each other along a slanted line may meet after an astronomically long time or never (a
+  // closed orbit that just misses). There, this call would follow cell crossings for ever: pass
+  // a time limit (below) when a run might be of that kind.
   std::uint64_t run_collisions(std::uint64_t count);
+  // The same, but never past world time `time_limit` (>= time()): when the next contact would
+  // come later, it stops there, with the world's time at `time_limit` (as run_until would).
+  std::uint64_t run_collisions(std::uint64_t count, double time_limit);
 
   // Stop early: after each contact the callback is asked, and if it answers true the current
   // step / run ends right after that contact, with every ball brought to that time.

@@ -65,15 +65,24 @@ std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) cons
       return "it reaches outside the box";
     }
   }
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const Vec2 nearest = detail::nearest_point(walls[w], p);
-    if (length_squared(nearest - p) < r * r) {
-      return "it overlaps wall " + std::to_string(w);
+  const auto overlaps_wall = [&](std::uint32_t w) {
+    return length_squared(detail::nearest_point(walls[w], p) - p) < r * r;
+  };
+  if (!grid_valid) {
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+      if (overlaps_wall(w)) return "it overlaps wall " + std::to_string(w);
     }
+    return {};
   }
-  if (!grid_valid) return {};
+  // The callers made the grid fit this ball (ensure_grid): a wall within r of p is listed in
+  // p's cell, since walls are listed in every cell their box grown by a cell overlaps. Lowest id
+  // first, as the full scan would report.
+  const std::int32_t home = grid.cell_of(wrap_into_cell(p));
+  for (const std::uint32_t w : grid.walls(home)) {
+    if (overlaps_wall(w)) return "it overlaps wall " + std::to_string(w);
+  }
   std::string found;
-  grid.for_each_neighbour(grid.cell_of(wrap_into_cell(p)), [&](std::int32_t cell) {
+  grid.for_each_neighbour(home, [&](std::int32_t cell) {
     for (std::int32_t j = grid.first_ball(cell); j != detail::kNoBall && found.empty();
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
@@ -381,43 +390,6 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   w.grid.insert(slot, w.grid.cell_of(target));
   w.events_valid = false;
   return target;
-}
-
-std::optional<std::string> World::audit(double tolerance) const {
-  const Impl& w = *impl_;
-  for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
-    const BallSlot& a = w.balls[i];
-    if (!a.alive) continue;
-    const Vec2 p = w.position_at(i, w.time);
-    if (!is_finite(p) || !is_finite(a.velocity)) {
-      return "ball " + std::to_string(i) + " has a non-finite position or velocity";
-    }
-    if (w.def.boundary == Boundary::box) {
-      const double slack = tolerance * a.radius;
-      if (p.x - a.radius < w.def.lower.x - slack || p.x + a.radius > w.def.upper.x + slack ||
-          p.y - a.radius < w.def.lower.y - slack || p.y + a.radius > w.def.upper.y + slack) {
-        return "ball " + std::to_string(i) + " reaches outside the box";
-      }
-    }
-    for (std::size_t k = 0; k < w.walls.size(); ++k) {
-      const double gap = length(detail::nearest_point(w.walls[k], p) - p);
-      if (gap < a.radius * (1.0 - tolerance)) {
-        return "ball " + std::to_string(i) + " overlaps wall " + std::to_string(k) + " by " +
-               number(a.radius - gap);
-      }
-    }
-    for (std::uint32_t j = i + 1; j < w.balls.size(); ++j) {
-      const BallSlot& b = w.balls[j];
-      if (!b.alive) continue;
-      const double reach = a.radius + b.radius;
-      const double gap = length(w.minimum_image(w.position_at(j, w.time) - p));
-      if (gap < reach * (1.0 - tolerance)) {
-        return "balls " + std::to_string(i) + " and " + std::to_string(j) + " overlap by " +
-               number(reach - gap);
-      }
-    }
-  }
-  return std::nullopt;
 }
 
 }  // namespace carom

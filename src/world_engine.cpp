@@ -25,6 +25,12 @@ constexpr double kOpenGrowth = 0.5;
 // rather than the grid huge.
 constexpr double kCellsPerBall = 4.0;
 constexpr double kMinCells = 1024.0;
+// A grid is re-planned while balls are added once a re-plan would make its cells this much
+// smaller per side (the ball count has grown about 4 times: O(1) amortised per add_ball) ...
+constexpr double kAddCoarseness = 2.0;
+// ... and before a run once it would make them any smaller beyond the floor-rounding of the cell
+// count, so that a run never keeps cells coarser than it needs (a run's re-plan is paid once).
+constexpr double kRunCoarseness = 1.01;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
@@ -43,9 +49,27 @@ void World::Impl::ensure_grid(Vec2 extra_point, double extra_radius) {
     const bool inside =
         def.boundary != Boundary::open || (extra_point.x >= lower.x && extra_point.x <= upper.x &&
                                            extra_point.y >= lower.y && extra_point.y <= upper.y);
-    if (cell_fits && inside) return;
+    // Re-planned as balls are added: the cell count allowed grows with the balls, and each
+    // re-plan (O(N)) comes only after the count has grown by a constant factor (kAddCoarseness),
+    // so adding balls costs O(1) amortised and every add_ball scans only a few balls.
+    if (cell_fits && inside && !grid_too_coarse(live_count + 1, kAddCoarseness)) return;
   }
   rebuild_grid(extra_point, extra_radius);
+}
+
+double World::Impl::wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
+                                     double largest) const {
+  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
+  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(ball_total));
+  if (extent_x / cell * (extent_y / cell) > max_cells) {
+    cell = std::sqrt(extent_x * extent_y / max_cells);
+  }
+  if (def.boundary == Boundary::periodic) {
+    // Three cells per axis at least, so the 3×3 block never holds a cell twice (add_ball keeps
+    // every diameter below this).
+    cell = std::min(cell, std::min(extent_x, extent_y) / 3.0);
+  }
+  return cell;
 }
 
 void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
@@ -66,8 +90,9 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
     lower = {std::min(lower.x, wall_lower.x), std::min(lower.y, wall_lower.y)};
     upper = {std::max(upper.x, wall_upper.x), std::max(upper.y, wall_upper.y)};
   }
-  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
+  const std::size_t ball_total = live_count + 1;
   if (def.boundary == Boundary::open) {
+    const double cell = wanted_cell_size(upper.x - lower.x, upper.y - lower.y, ball_total, largest);
     const double room = kOpenGrowth * std::max(upper.x - lower.x, upper.y - lower.y) + 2.0 * cell;
     lower -= Vec2{room, room};
     upper += Vec2{room, room};
@@ -76,15 +101,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
     upper = def.upper;
   }
   const Vec2 extent = upper - lower;
-  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
-  if (extent.x / cell * (extent.y / cell) > max_cells) {
-    cell = std::sqrt(extent.x * extent.y / max_cells);
-  }
-  if (def.boundary == Boundary::periodic) {
-    // Three cells per axis at least, so the 3×3 block never holds a cell twice (add_ball keeps
-    // every diameter below this).
-    cell = std::min(cell, std::min(extent.x, extent.y) / 3.0);
-  }
+  const double cell = wanted_cell_size(extent.x, extent.y, ball_total, largest);
   const auto nx = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.x / cell)));
   const auto ny = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.y / cell)));
   grid.setup(lower, {extent.x / nx, extent.y / ny}, nx, ny, def.boundary == Boundary::periodic,
@@ -102,18 +119,16 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   events_valid = false;
 }
 
-// A grid built while balls were being added may have cells far larger than the balls now need
-// (its cell count was capped for the few balls there were); more balls per cell means more pairs
-// per prediction.
-bool World::Impl::grid_too_coarse() const {
-  const double largest = largest_radius;
-  const double wanted = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
-  const Vec2 cell = grid.cell_size();
+// Whether a re-plan for `ball_total` balls over the grid's present extent would make cells
+// smaller by more than `coarseness` (per side). The grid planned while few balls were there has
+// few cells (at most kCellsPerBall per ball); more balls per cell means more pairs per prediction.
+bool World::Impl::grid_too_coarse(std::size_t ball_total, double coarseness) const {
   const Vec2 extent = grid.upper() - grid.lower();
-  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
-  const double capped = std::max(wanted, std::sqrt(extent.x * extent.y / max_cells));
-  constexpr double kCoarseness = 2.0;  // rebuild only when a finer grid would pay clearly
-  return std::min(cell.x, cell.y) > kCoarseness * capped;
+  const double cell = wanted_cell_size(extent.x, extent.y, ball_total, largest_radius);
+  const double planned_x = extent.x / std::max(1.0, std::floor(extent.x / cell));
+  const double planned_y = extent.y / std::max(1.0, std::floor(extent.y / cell));
+  const Vec2 now = grid.cell_size();
+  return now.x > coarseness * planned_x || now.y > coarseness * planned_y;
 }
 
 // ---- prediction ---------------------------------------------------------------------------
@@ -220,7 +235,7 @@ void World::Impl::predict(std::uint32_t ball) {
 std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   contacts.clear();
   stopped = false;
-  if (!grid_valid || grid_too_coarse()) rebuild_grid(Vec2{}, 0.0);
+  if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
   if (!events_valid) predict_all();
   std::uint64_t resolved = 0;
   // Without an end time, a run must notice when contacts are over for good (two balls flying

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "carom/world.hpp"
@@ -93,12 +95,26 @@ struct World::Impl {
   // message; empty when the place is free.
   [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;
 
+  // ---- audit (world_audit.cpp): a description of the first violation found, or nothing ----
+  [[nodiscard]] std::optional<std::string> audit_all_pairs(double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_with_grid(double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_ball(std::uint32_t i, Vec2 p,
+                                                      double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
+                                                      double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
+                                                      double tolerance) const;
+
   // ---- engine (world_engine.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,
   // for an open world, cover every ball and wall), rebuilding it when it does not.
   void ensure_grid(Vec2 extra_point, double extra_radius);
   void rebuild_grid(Vec2 extra_point, double extra_radius);
-  [[nodiscard]] bool grid_too_coarse() const;
+  [[nodiscard]] bool grid_too_coarse(std::size_t ball_total, double coarseness) const;
+  // The side of a cell for `ball_total` balls over that extent whose largest radius is
+  // `largest`, before rounding the cell count.
+  [[nodiscard]] double wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
+                                        double largest) const;
   void predict_all();
   void predict(std::uint32_t ball);
   void advance(std::uint32_t ball, double t);

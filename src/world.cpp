@@ -152,6 +152,10 @@ BallId World::add_ball(const BallDef& def) {
     slot = w.free_slots.back();
     w.free_slots.pop_back();
   } else {
+    if (w.balls.size() >= detail::EventQueue::kMaxBalls) {
+      refuse(kFunction, "def", "-",
+             "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
+    }
     slot = static_cast<std::uint32_t>(w.balls.size());
     w.balls.emplace_back();
     w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));

@@ -243,7 +243,7 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   // it; each failed proof doubles the stretch before the next, so proofs (O(N²)) stay rare.
   std::uint64_t without_contact = 0;
   std::uint64_t next_proof = std::max<std::uint64_t>(kEventsBeforeProof, 2 * live_count);
-  while (!queue.empty()) {
+  for (;;) {
     const Event event = queue.top();
     if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;

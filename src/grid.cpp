@@ -37,14 +37,6 @@ std::int32_t Grid::row_of(double y) const {
   return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
 }
 
-Vec2 Grid::cell_lower(std::int32_t cell) const {
-  return {lower_.x + cell_.x * column(cell), lower_.y + cell_.y * row(cell)};
-}
-
-Vec2 Grid::cell_upper(std::int32_t cell) const {
-  return {lower_.x + cell_.x * (column(cell) + 1), lower_.y + cell_.y * (row(cell) + 1)};
-}
-
 void Grid::insert(std::uint32_t ball, std::int32_t cell) {
   const auto first = head_[static_cast<std::size_t>(cell)];
   next_[ball] = first;

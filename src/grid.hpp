@@ -35,8 +35,15 @@ class Grid {
   [[nodiscard]] std::int32_t row_of(double y) const;
   [[nodiscard]] std::int32_t cell_of(Vec2 p) const { return index(column_of(p.x), row_of(p.y)); }
   // The cell's lower-left corner and upper-right corner.
-  [[nodiscard]] Vec2 cell_lower(std::int32_t cell) const;
-  [[nodiscard]] Vec2 cell_upper(std::int32_t cell) const;
+  [[nodiscard]] Vec2 cell_lower(std::int32_t cell) const {
+    return cell_lower(column(cell), row(cell));
+  }
+  [[nodiscard]] Vec2 cell_upper(std::int32_t cell) const {
+    return {lower_.x + cell_.x * (column(cell) + 1), lower_.y + cell_.y * (row(cell) + 1)};
+  }
+  [[nodiscard]] Vec2 cell_lower(std::int32_t cx, std::int32_t cy) const {
+    return {lower_.x + cell_.x * cx, lower_.y + cell_.y * cy};
+  }
 
   void insert(std::uint32_t ball, std::int32_t cell);
   void erase(std::uint32_t ball);

@@ -166,26 +166,29 @@ void World::Impl::predict(std::uint32_t ball) {
   Event best;
   best.owner = ball;
 
-  // Leaving the cell. In a box the outermost cells have no outer side to leave through.
+  // Leaving the cell, through the side it moves towards on each axis (x first on a tie). In a
+  // box the outermost cells have no outer side to leave through.
   const std::int32_t cell = grid.cell_of_ball(ball);
-  const Vec2 low = grid.cell_lower(cell);
-  const Vec2 high = grid.cell_upper(cell);
-  const bool wraps = def.boundary != Boundary::box;
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
-  auto consider_crossing = [&](double distance, double speed, std::uint32_t side, bool allowed) {
-    if (!allowed || speed == 0.0) return;
-    const double t = time + std::max(0.0, distance / speed);
+  const bool wraps = def.boundary != Boundary::box;
+  const Vec2 low = grid.cell_lower(cx, cy);
+  const Vec2 high = grid.cell_lower(cx + 1, cy + 1);  // the upper-right corner
+  if (v.x > 0.0 ? (wraps || cx + 1 < grid.nx()) : (v.x < 0.0 && (wraps || cx > 0))) {
+    const double distance = v.x > 0.0 ? high.x - p.x : low.x - p.x;
+    best.time = time + std::max(0.0, distance / v.x);
+    best.kind = EventKind::cell_crossing;
+    best.partner = v.x > 0.0 ? detail::kRight : detail::kLeft;
+  }
+  if (v.y > 0.0 ? (wraps || cy + 1 < grid.ny()) : (v.y < 0.0 && (wraps || cy > 0))) {
+    const double distance = v.y > 0.0 ? high.y - p.y : low.y - p.y;
+    const double t = time + std::max(0.0, distance / v.y);
     if (t < best.time) {
       best.time = t;
       best.kind = EventKind::cell_crossing;
-      best.partner = side;
+      best.partner = v.y > 0.0 ? detail::kUp : detail::kDown;
     }
-  };
-  consider_crossing(high.x - p.x, v.x, detail::kRight, v.x > 0.0 && (wraps || cx + 1 < grid.nx()));
-  consider_crossing(low.x - p.x, v.x, detail::kLeft, v.x < 0.0 && (wraps || cx > 0));
-  consider_crossing(high.y - p.y, v.y, detail::kUp, v.y > 0.0 && (wraps || cy + 1 < grid.ny()));
-  consider_crossing(low.y - p.y, v.y, detail::kDown, v.y < 0.0 && (wraps || cy > 0));
+  }
 
   // Walls listed in this cell.
   const Ball shape{p, b.radius};
@@ -202,13 +205,14 @@ void World::Impl::predict(std::uint32_t ball) {
   }
 
   // Balls in the neighbouring cells.
+  const bool movable = b.inverse_mass != 0.0;
   grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
     for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == ball) continue;
       const BallSlot& o = balls[other];
-      if (b.inverse_mass == 0.0 && o.inverse_mass == 0.0) continue;  // nothing can respond
+      if (!movable && o.inverse_mass == 0.0) continue;  // nothing can respond
       const Vec2 s = minimum_image(p - position_at(other, time));
       const detail::Crossing crossing =
           detail::entry_crossing(s, v - o.velocity, b.radius + o.radius, kFarFuture);
@@ -220,6 +224,8 @@ void World::Impl::predict(std::uint32_t ball) {
       candidate.partner = other;
       candidate.partner_version = o.version;
       if (detail::earlier(candidate, best)) best = candidate;
+      // Mirroring (docs/world.md): the time alone settles it unless the times are equal.
+      if (candidate.time > queue.time_of(other)) continue;
       Event mirrored = candidate;
       mirrored.owner = other;
       mirrored.partner = ball;

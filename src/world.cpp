@@ -39,7 +39,7 @@ void validate_ball_def(const char* function, const BallDef& def) {
 std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   if (id.is_null()) refuse(function, "id", "null", "must be a ball of this world");
   if (id.index >= balls.size() || !balls[id.index].alive ||
-      balls[id.index].generation != id.generation) {
+      infos[id.index].generation != id.generation) {
     refuse(function, "id",
            "{" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}",
            "is stale: that ball was removed (or never belonged to this world)");
@@ -158,6 +158,7 @@ BallId World::add_ball(const BallDef& def) {
     }
     slot = static_cast<std::uint32_t>(w.balls.size());
     w.balls.emplace_back();
+    w.infos.emplace_back();
     w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));
   }
   BallSlot& b = w.balls[slot];
@@ -165,12 +166,13 @@ BallId World::add_ball(const BallDef& def) {
   b.velocity = def.velocity;
   b.local_time = w.time;
   b.radius = def.radius;
-  b.mass = def.mass;
   b.inverse_mass = def.mass == kImmovable ? 0.0 : 1.0 / def.mass;
-  b.restitution = def.restitution.value_or(w.def.restitution);
-  b.last_contact_time = -std::numeric_limits<double>::infinity();
-  b.user_data = def.user_data;
   b.alive = true;
+  detail::BallInfo& info = w.infos[slot];
+  info.mass = def.mass;
+  info.restitution = def.restitution.value_or(w.def.restitution);
+  info.last_contact_time = -std::numeric_limits<double>::infinity();
+  info.user_data = def.user_data;
   ++b.version;
   ++w.live_count;
   w.largest_radius = std::max(w.largest_radius, def.radius);
@@ -186,7 +188,8 @@ void World::remove_ball(BallId id) {
   w.grid.erase(slot);
   b.alive = false;
   ++b.version;
-  b.generation = b.generation == std::numeric_limits<std::uint32_t>::max() ? 1 : b.generation + 1;
+  std::uint32_t& generation = w.infos[slot].generation;
+  generation = generation == std::numeric_limits<std::uint32_t>::max() ? 1 : generation + 1;
   w.free_slots.push_back(slot);
   --w.live_count;
   w.events_valid = false;
@@ -195,7 +198,7 @@ void World::remove_ball(BallId id) {
 bool World::contains(BallId id) const noexcept {
   const Impl& w = *impl_;
   return !id.is_null() && id.index < w.balls.size() && w.balls[id.index].alive &&
-         w.balls[id.index].generation == id.generation;
+         w.infos[id.index].generation == id.generation;
 }
 
 std::vector<BallId> World::balls() const {
@@ -315,26 +318,29 @@ double World::radius(BallId id) const {
   return impl_->balls[impl_->slot_of("World::radius", id)].radius;
 }
 
-double World::mass(BallId id) const { return impl_->balls[impl_->slot_of("World::mass", id)].mass; }
+double World::mass(BallId id) const { return impl_->infos[impl_->slot_of("World::mass", id)].mass; }
 
 std::uint64_t World::user_data(BallId id) const {
-  return impl_->balls[impl_->slot_of("World::user_data", id)].user_data;
+  return impl_->infos[impl_->slot_of("World::user_data", id)].user_data;
 }
 
 std::size_t World::ball_count() const noexcept { return impl_->live_count; }
 
 double World::kinetic_energy() const noexcept {
   double energy = 0.0;
-  for (const BallSlot& b : impl_->balls) {
-    if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * b.mass * length_squared(b.velocity);
+  for (std::size_t i = 0; i < impl_->balls.size(); ++i) {
+    const BallSlot& b = impl_->balls[i];
+    const double mass = impl_->infos[i].mass;
+    if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * mass * length_squared(b.velocity);
   }
   return energy;
 }
 
 Vec2 World::momentum() const noexcept {
   Vec2 total;
-  for (const BallSlot& b : impl_->balls) {
-    if (b.alive && b.inverse_mass > 0.0) total += b.velocity * b.mass;
+  for (std::size_t i = 0; i < impl_->balls.size(); ++i) {
+    const BallSlot& b = impl_->balls[i];
+    if (b.alive && b.inverse_mass > 0.0) total += b.velocity * impl_->infos[i].mass;
   }
   return total;
 }

@@ -109,12 +109,12 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive) grid.insert(i, grid.cell_of(position_at(i, time)));
   }
-  for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    Vec2 wall_lower;
-    Vec2 wall_upper;
-    detail::bounds(walls[w], wall_lower, wall_upper);
-    grid.add_wall(w, wall_lower, wall_upper);
+  std::vector<Vec2> wall_lower(walls.size());
+  std::vector<Vec2> wall_upper(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
   }
+  grid.set_walls(wall_lower, wall_upper);
   grid_valid = true;
   events_valid = false;
 }
@@ -301,10 +301,10 @@ double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t)
   // Inelastic collapse prevention (TC model): recently collided balls bounce elastically.
   const double recent = t - def.collapse_time;
   if (def.collapse_time > 0.0 &&
-      (balls[i].last_contact_time > recent || balls[j].last_contact_time > recent)) {
+      (infos[i].last_contact_time > recent || infos[j].last_contact_time > recent)) {
     return 1.0;
   }
-  return std::min(balls[i].restitution, balls[j].restitution);
+  return std::min(infos[i].restitution, infos[j].restitution);
 }
 
 bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) {
@@ -321,8 +321,8 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     const double impulse = (1.0 + restitution) * approach / (a.inverse_mass + b.inverse_mass);
     a.velocity -= normal * (impulse * a.inverse_mass);
     b.velocity += normal * (impulse * b.inverse_mass);
-    a.last_contact_time = t;
-    b.last_contact_time = t;
+    infos[i].last_contact_time = t;
+    infos[j].last_contact_time = t;
     const bool a_first = i < j;
     ContactEvent contact;
     contact.time = t;
@@ -356,11 +356,12 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   bool resolved = false;
   if (approach > 0.0) {
     const double restitution =
-        def.collapse_time > 0.0 && a.last_contact_time > t - def.collapse_time ? 1.0
-                                                                               : a.restitution;
+        def.collapse_time > 0.0 && infos[i].last_contact_time > t - def.collapse_time
+            ? 1.0
+            : infos[i].restitution;
     const double speed_change = (1.0 + restitution) * approach;
     a.velocity -= normal * speed_change;
-    a.last_contact_time = t;
+    infos[i].last_contact_time = t;
     ContactEvent contact;
     contact.time = t;
     contact.kind = ContactKind::ball_wall;
@@ -369,7 +370,7 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
     contact.point = point;
     contact.normal = normal;
     contact.approach_speed = approach;
-    contact.impulse = a.inverse_mass > 0.0 ? speed_change * a.mass : 0.0;
+    contact.impulse = a.inverse_mass > 0.0 ? speed_change * infos[i].mass : 0.0;
     contacts.push_back(contact);
     resolved = true;
     ++a.version;

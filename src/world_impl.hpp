@@ -24,21 +24,27 @@ namespace detail {
 // the old side. The margin keeps every ball that can touch it within the 3×3 block regardless.
 inline constexpr double kCellMargin = 1e-6;
 
-// A ball slot. A ball moves in a straight line between its events, so it is stored at its own
-// local time: its position at any later time t is position + velocity·(t − local_time).
-struct BallSlot {
+// A ball slot: what prediction reads of every candidate partner, in one cache line. A ball
+// moves in a straight line between its events, so it is stored at its own local time: its
+// position at any later time t is position + velocity·(t − local_time).
+struct alignas(64) BallSlot {
   Vec2 position;
   Vec2 velocity;
   double local_time = 0.0;
   double radius = 0.0;
-  double mass = 0.0;
   double inverse_mass = 0.0;  // 0 for an immovable ball
+  std::uint32_t version = 0;  // bumped whenever the trajectory changes
+  bool alive = false;
+};
+
+// The rest of a ball, read only by contacts and the API (kept apart so that prediction's
+// scans of neighbours touch one cache line per ball).
+struct BallInfo {
+  double mass = 0.0;
   double restitution = 1.0;
   double last_contact_time = -std::numeric_limits<double>::infinity();
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
-  std::uint32_t version = 0;     // bumped whenever the trajectory changes
-  bool alive = false;
 };
 
 }  // namespace detail
@@ -46,6 +52,7 @@ struct BallSlot {
 struct World::Impl {
   WorldDef def;
   std::vector<detail::BallSlot> balls;
+  std::vector<detail::BallInfo> infos;    // by slot, beside balls
   std::vector<std::uint32_t> free_slots;  // reused last-freed first
   std::size_t live_count = 0;
   std::vector<detail::Wall> walls;
@@ -67,7 +74,7 @@ struct World::Impl {
 
   // ---- handles ----
   [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
-  [[nodiscard]] BallId id_of(std::uint32_t slot) const { return {slot, balls[slot].generation}; }
+  [[nodiscard]] BallId id_of(std::uint32_t slot) const { return {slot, infos[slot].generation}; }
 
   // ---- geometry ----
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {

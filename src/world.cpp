@@ -303,6 +303,16 @@ bool World::stopped_early() const noexcept { return impl_->stopped; }
 
 std::span<const ContactEvent> World::contacts() const noexcept { return impl_->contacts; }
 
+void World::set_contact_recording(bool enabled) noexcept {
+  impl_->record_contacts = enabled;
+  if (!enabled) {
+    impl_->contacts.clear();
+    impl_->contacts.shrink_to_fit();
+  }
+}
+
+bool World::contact_recording() const noexcept { return impl_->record_contacts; }
+
 double World::time() const noexcept { return impl_->time; }
 
 Vec2 World::position(BallId id) const {

@@ -264,7 +264,7 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
     without_contact = 0;
     ++resolved;
     ++collisions;
-    const bool stop = stop_condition && stop_condition(contacts.back());
+    const bool stop = stop_condition && stop_condition(last_contact);
     if (stop || resolved == max_contacts) {
       stopped = stop;
       return resolved;
@@ -334,7 +334,7 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     contact.point = a.position + between * (a.radius / reach);
     contact.approach_speed = approach;
     contact.impulse = impulse;
-    contacts.push_back(contact);
+    record(contact);
     resolved = true;
   }
   ++a.version;
@@ -371,7 +371,7 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
     contact.normal = normal;
     contact.approach_speed = approach;
     contact.impulse = a.inverse_mass > 0.0 ? speed_change * infos[i].mass : 0.0;
-    contacts.push_back(contact);
+    record(contact);
     resolved = true;
     ++a.version;
   }

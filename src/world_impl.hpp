@@ -69,6 +69,8 @@ struct World::Impl {
   double time = 0.0;
   std::uint64_t collisions = 0;
   std::vector<ContactEvent> contacts;
+  bool record_contacts = true;
+  ContactEvent last_contact;  // the latest resolved, recorded or not (for the stop condition)
   std::function<bool(const ContactEvent&)> stop_condition;
   bool stopped = false;
 
@@ -111,6 +113,11 @@ struct World::Impl {
                                                       double tolerance) const;
   [[nodiscard]] std::optional<std::string> audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
                                                       double tolerance) const;
+
+  void record(const ContactEvent& contact) {
+    last_contact = contact;
+    if (record_contacts) contacts.push_back(contact);
+  }
 
   // ---- engine (world_engine.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,

@@ -155,8 +155,13 @@ class World {
   [[nodiscard]] bool stopped_early() const noexcept;
 
   // Contacts resolved by the last step / run_until / run_collisions, in the order they happened:
-  // by time, then kind (ball–ball before ball–wall), then ids.
+  // by time, then kind (ball–ball before ball–wall), then ids. Empty while recording is off.
   [[nodiscard]] std::span<const ContactEvent> contacts() const noexcept;
+  // Recording contacts (on by default) keeps every ContactEvent of a run (80 bytes each) until
+  // the next; a long science run may turn it off. The stop condition still sees every contact,
+  // so a condition that records what it needs and answers false is a per-contact callback.
+  void set_contact_recording(bool enabled) noexcept;
+  [[nodiscard]] bool contact_recording() const noexcept;
 
   // ---- queries, at the world's current time ----
   [[nodiscard]] double time() const noexcept;

@@ -818,5 +818,36 @@ TEST(WorldApi, ThousandSmallStepsMatchOneBigStep) {
   }
 }
 
+// ---- contact recording -----------------------------------------------------------------------
+
+TEST(WorldApi, ContactRecordingOffKeepsNoContactsAndChangesNothingElse) {
+  World recorded = box_of_balls(53, 6, 10.0);
+  World unrecorded = box_of_balls(53, 6, 10.0);
+  EXPECT_TRUE(unrecorded.contact_recording());  // on by default
+  unrecorded.set_contact_recording(false);
+  EXPECT_FALSE(unrecorded.contact_recording());
+  std::vector<ContactEvent> seen;
+  unrecorded.set_stop_condition([&seen](const ContactEvent& contact) {
+    seen.push_back(contact);  // a per-contact callback that never stops the run
+    return false;
+  });
+  ASSERT_EQ(recorded.run_collisions(300), 300u);
+  ASSERT_EQ(unrecorded.run_collisions(300), 300u);
+  EXPECT_TRUE(unrecorded.contacts().empty());
+  ASSERT_EQ(seen.size(), recorded.contacts().size());
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].time, recorded.contacts()[k].time) << k;
+    EXPECT_EQ(seen[k].a, recorded.contacts()[k].a) << k;
+    EXPECT_EQ(seen[k].b, recorded.contacts()[k].b) << k;
+  }
+  EXPECT_EQ(unrecorded.time(), recorded.time());
+  const std::vector<BallId> ids = recorded.balls();
+  for (const BallId id : ids) EXPECT_EQ(unrecorded.position(id), recorded.position(id));
+  unrecorded.set_contact_recording(true);
+  unrecorded.step(kStep);
+  recorded.step(kStep);
+  EXPECT_EQ(unrecorded.contacts().size(), recorded.contacts().size());
+}
+
 }  // namespace
 }  // namespace carom

@@ -43,7 +43,7 @@ using WallId = std::uint32_t;
 enum class Boundary : std::uint8_t {
   open,      // no boundary: balls may travel anywhere
   box,       // four walls along [lower, upper]; no ball ever leaves
-  periodic,  // both axes wrap around [lower, upper)
+  periodic,  // both axes wrap around [lower, upper); walls are refused (see add_segment)
 };
 
 struct WorldDef {
@@ -64,8 +64,10 @@ struct BallDef {
   Vec2 position;
   Vec2 velocity;
   double radius = 1.0;
-  double mass = 1.0;                  // > 0, or kImmovable for a ball nothing moves
-  std::optional<double> restitution;  // in [0, 1]; unset: the world's
+  double mass = 1.0;  // > 0, or kImmovable for a ball nothing moves
+  // In [0, 1]; unset: the world's. Two balls bounce with the smaller of their two restitutions
+  // (a ball of putty does not bounce off a rubber ball); a ball and a wall with the ball's.
+  std::optional<double> restitution;
   std::uint64_t user_data = 0;
 };
 
@@ -109,12 +111,16 @@ class World {
   [[nodiscard]] std::vector<BallId> balls() const;
 
   // ---- static geometry ----
+  // Walls are refused in a periodic world (InvalidArgument): a wall near one edge of the cell
+  // touches balls near the opposite edge through the wrap, which needs every wall listed and
+  // swept at each of its periodic images; not done yet (docs/world.md).
   WallId add_segment(const Segment& segment);
   // Consecutive points joined by segments (and the last back to the first when closed); returns
   // the first segment's id, the rest follow in order.
   WallId add_polyline(std::span<const Vec2> points, bool closed = false);
   WallId add_arc(const Arc& arc);
-  // Four segments along an axis-aligned box: lower-left to lower-right, counter-clockwise.
+  // Four segments along an axis-aligned box, with consecutive ids from the one returned: bottom
+  // (lower-left to lower-right), right, top, left (counter-clockwise).
   WallId add_box(Vec2 lower, Vec2 upper);
   [[nodiscard]] std::size_t wall_count() const noexcept;
 

@@ -192,6 +192,7 @@ bool EventQueue::open_year() {
   current_ = 0;
   year_end_ = static_cast<std::int64_t>(size);
   year_open_ = true;
+  std::vector<double>().swap(scratch_);  // not kept: 8 bytes a ball between years
   std::uint32_t pending = overflow_;
   overflow_ = kNone;
   outside_heap_ = 0;

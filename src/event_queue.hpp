@@ -79,7 +79,7 @@ class EventQueue {
   std::int64_t year_end_ = 0;  // the first bucket past the year
   double origin_ = 0.0;        // the time where bucket 0 starts
   double inverse_width_ = 0.0;
-  std::vector<double> scratch_;  // open_year's times, kept to avoid reallocating
+  std::vector<double> scratch_;  // open_year's times (freed after each use)
 };
 
 }  // namespace carom::detail

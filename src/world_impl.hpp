@@ -62,16 +62,18 @@ struct World::Impl {
   double largest_radius = 0.0;       // of every ball ever added (never lowered: cells stay valid)
 
   detail::Grid grid;
-  bool grid_valid = false;
   detail::EventQueue queue;
-  bool events_valid = false;
 
   double time = 0.0;
   std::uint64_t collisions = 0;
   std::vector<ContactEvent> contacts;
-  bool record_contacts = true;
   ContactEvent last_contact;  // the latest resolved, recorded or not (for the stop condition)
   std::function<bool(const ContactEvent&)> stop_condition;
+
+  // The flags together, so that they pad the structure once.
+  bool grid_valid = false;
+  bool events_valid = false;
+  bool record_contacts = true;
   bool stopped = false;
 
   // ---- handles ----

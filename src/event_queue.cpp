@@ -74,6 +74,7 @@ bool EventQueue::before(const Entry& a, const Entry& b) {
 // Rounding is monotonic, so a later time never gets an earlier bucket: every event of a bucket
 // comes before every event of a later one, and the heap's first is the queue's first.
 std::int64_t EventQueue::bucket_of(double time) const {
+  if (inverse_width_ == 0.0) return time <= origin_ ? 0 : kFarBucket;  // a year of one instant
   const double offset = (time - origin_) * inverse_width_;
   if (!(offset < kLastBucket)) return kFarBucket;
   return static_cast<std::int64_t>(std::floor(offset));
@@ -187,10 +188,12 @@ bool EventQueue::open_year() {
   const std::size_t size = std::bit_ceil(std::max<std::uint64_t>(kMinBuckets, wanted));
   buckets_.assign(size, kNone);
   origin_ = earliest;
-  // All pending at one time (width 0): one bucket holds them all, and the next year comes later.
+  // Half the events or more at the earliest time (width 0): the year is that one instant, so
+  // that later events wait in the overflow list and the next year is tuned to their spread
+  // (rather than every event going to the heap).
   inverse_width_ = width > 0.0 && std::isfinite(1.0 / width) ? 1.0 / width : 0.0;
   current_ = 0;
-  year_end_ = static_cast<std::int64_t>(size);
+  year_end_ = inverse_width_ == 0.0 ? 1 : static_cast<std::int64_t>(size);
   year_open_ = true;
   std::vector<double>().swap(scratch_);  // not kept: 8 bytes a ball between years
   std::uint32_t pending = overflow_;

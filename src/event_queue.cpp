@@ -1,66 +1,257 @@
 #include "event_queue.hpp"
 
-#include <utility>
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace carom::detail {
 
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr std::int64_t kFarBucket = std::numeric_limits<std::int64_t>::max();
+// Bucket numbers stay far below 2^62 so that converting them to integers is exact and safe.
+constexpr double kLastBucket = 0x1p62;
+// A year has at least this many buckets, and about kBucketsPerEvent per pending event: with the
+// width below, most events then fall inside the year and the overflow list stays short.
+constexpr std::uint32_t kMinBuckets = 16;
+constexpr double kBucketsPerEvent = 2.0;
+// Pending events' times ahead of the earliest are spread roughly exponentially with mean m, so
+// n events are about n/m per unit time at the front: a width of kEventsPerBucket·m/n puts about
+// that many events in each bucket there.
+constexpr double kEventsPerBucket = 2.0;
+
+}  // namespace
+
 void EventQueue::reset(std::uint32_t count) {
-  events_.assign(count, Event{});
-  heap_.resize(count);
-  position_.resize(count);
+  events_.resize(count);
+  partner_versions_.assign(count, 0);
+  places_.assign(count, Place::none);
+  link_next_.assign(count, kNone);
+  link_prev_.assign(count, kNone);
   for (std::uint32_t i = 0; i < count; ++i) {
-    events_[i].owner = i;
-    heap_[i] = {events_[i].time, i};
-    position_[i] = i;
+    events_[i] = {kInfinity, i | (static_cast<std::uint32_t>(EventKind::cell_crossing) << 30), 0};
   }
+  heap_.clear();
+  std::fill(buckets_.begin(), buckets_.end(), kNone);
+  overflow_ = kNone;
+  outside_heap_ = 0;
+  year_open_ = false;
+  current_ = 0;
+  year_end_ = 0;
 }
 
-void EventQueue::add_slot() {
-  const auto owner = static_cast<std::uint32_t>(events_.size());
-  Event nothing;
-  nothing.owner = owner;
-  events_.push_back(nothing);
-  position_.push_back(static_cast<std::uint32_t>(heap_.size()));
-  heap_.push_back({nothing.time, owner});
+Event EventQueue::unpack(std::uint32_t owner) const {
+  const Entry& entry = events_[owner];
+  Event event;
+  event.time = entry.time;
+  event.kind = entry.kind();
+  event.owner = owner;
+  event.partner = entry.partner;
+  event.partner_version = partner_versions_[owner];
+  return event;
+}
+
+bool EventQueue::before(const Entry& a, const Entry& b) {
+  if (a.time != b.time) return a.time < b.time;
+  if (a.kind() != b.kind()) return a.kind() < b.kind();
+  const std::uint32_t a_owner = a.owner();
+  const std::uint32_t b_owner = b.owner();
+  const bool pair_a = a.kind() == EventKind::ball_ball;
+  const std::uint32_t a_first = pair_a && a.partner < a_owner ? a.partner : a_owner;
+  const std::uint32_t a_second = pair_a && a.partner < a_owner ? a_owner : a.partner;
+  const bool pair_b = b.kind() == EventKind::ball_ball;
+  const std::uint32_t b_first = pair_b && b.partner < b_owner ? b.partner : b_owner;
+  const std::uint32_t b_second = pair_b && b.partner < b_owner ? b_owner : b.partner;
+  if (a_first != b_first) return a_first < b_first;
+  if (a_second != b_second) return a_second < b_second;
+  return a_owner < b_owner;
+}
+
+// Rounding is monotonic, so a later time never gets an earlier bucket: every event of a bucket
+// comes before every event of a later one, and the heap's first is the queue's first.
+std::int64_t EventQueue::bucket_of(double time) const {
+  if (inverse_width_ == 0.0) return time <= origin_ ? 0 : kFarBucket;  // a year of one instant
+  const double offset = (time - origin_) * inverse_width_;
+  if (!(offset < kLastBucket)) return kFarBucket;
+  return static_cast<std::int64_t>(std::floor(offset));
 }
 
 void EventQueue::set(std::uint32_t owner, const Event& event) {
-  const bool sooner = earlier(event, events_[owner]);
-  events_[owner] = event;
-  heap_[position_[owner]].time = event.time;
-  if (sooner) {
-    sift_up(position_[owner]);
+  remove(owner);
+  events_[owner] = {event.time, owner | (static_cast<std::uint32_t>(event.kind) << 30),
+                    event.partner};
+  partner_versions_[owner] = event.partner_version;
+  insert(owner);
+}
+
+void EventQueue::insert(std::uint32_t owner) {
+  const double time = events_[owner].time;
+  if (time == kInfinity) return;  // Place::none
+  if (!year_open_) {
+    list_push(overflow_, owner, Place::overflow);
+    return;
+  }
+  const std::int64_t bucket = bucket_of(time);
+  if (bucket <= current_) {
+    heap_push(owner);
+  } else if (bucket < year_end_) {
+    const auto index = static_cast<std::size_t>(bucket) & (buckets_.size() - 1);
+    list_push(buckets_[index], owner, Place::bucket);
   } else {
-    sift_down(position_[owner]);
+    list_push(overflow_, owner, Place::overflow);
   }
 }
 
-void EventQueue::swap_positions(std::uint32_t a, std::uint32_t b) {
-  std::swap(heap_[a], heap_[b]);
-  position_[heap_[a].owner] = a;
-  position_[heap_[b].owner] = b;
+void EventQueue::remove(std::uint32_t owner) {
+  switch (places_[owner]) {
+    case Place::none:
+      return;
+    case Place::heap:
+      heap_remove(owner);
+      return;
+    case Place::bucket: {
+      // The bucket is found again from the stored time, by the same computation.
+      const std::int64_t bucket = bucket_of(events_[owner].time);
+      const auto index = static_cast<std::size_t>(bucket) & (buckets_.size() - 1);
+      list_remove(buckets_[index], owner);
+      return;
+    }
+    case Place::overflow:
+      list_remove(overflow_, owner);
+      return;
+  }
 }
 
-void EventQueue::sift_up(std::uint32_t position) {
+void EventQueue::list_push(std::uint32_t& head, std::uint32_t owner, Place place) {
+  link_prev_[owner] = kNone;
+  link_next_[owner] = head;
+  if (head != kNone) link_prev_[head] = owner;
+  head = owner;
+  places_[owner] = place;
+  ++outside_heap_;
+}
+
+void EventQueue::list_remove(std::uint32_t& head, std::uint32_t owner) {
+  const std::uint32_t before_it = link_prev_[owner];
+  const std::uint32_t after_it = link_next_[owner];
+  if (before_it != kNone) {
+    link_next_[before_it] = after_it;
+  } else {
+    head = after_it;
+  }
+  if (after_it != kNone) link_prev_[after_it] = before_it;
+  places_[owner] = Place::none;
+  --outside_heap_;
+}
+
+Event EventQueue::top() {
+  while (heap_.empty()) {
+    if (!year_open_ || current_ + 1 >= year_end_) {
+      if (!open_year()) return Event{};  // nothing finite left
+      continue;
+    }
+    ++current_;
+    auto& head = buckets_[static_cast<std::size_t>(current_) & (buckets_.size() - 1)];
+    while (head != kNone) {
+      const std::uint32_t owner = head;
+      list_remove(head, owner);
+      heap_push(owner);
+    }
+  }
+  return unpack(heap_.front());
+}
+
+bool EventQueue::open_year() {
+  // Every finite event is in the overflow list now (the year's buckets and the heap are empty).
+  if (overflow_ == kNone) {
+    year_open_ = false;
+    return false;
+  }
+  double earliest = kInfinity;
+  scratch_.clear();
+  for (std::uint32_t i = overflow_; i != kNone; i = link_next_[i]) {
+    earliest = std::min(earliest, events_[i].time);
+    scratch_.push_back(events_[i].time);
+  }
+  // The median time ahead of the earliest, robust against a few events far away (which would
+  // make a mean, and so the width, huge); for exponentially spread times it is m·ln 2.
+  const std::size_t count = scratch_.size();
+  const auto middle = scratch_.begin() + static_cast<std::ptrdiff_t>(count / 2);
+  std::nth_element(scratch_.begin(), middle, scratch_.end());
+  const double mean_ahead = (*middle - earliest) / std::numbers::ln2;
+  const double width = kEventsPerBucket * mean_ahead / static_cast<double>(count);
+  const auto wanted = static_cast<std::uint64_t>(kBucketsPerEvent * static_cast<double>(count));
+  const std::size_t size = std::bit_ceil(std::max<std::uint64_t>(kMinBuckets, wanted));
+  buckets_.assign(size, kNone);
+  origin_ = earliest;
+  // Half the events or more at the earliest time (width 0): the year is that one instant, so
+  // that later events wait in the overflow list and the next year is tuned to their spread
+  // (rather than every event going to the heap).
+  inverse_width_ = width > 0.0 && std::isfinite(1.0 / width) ? 1.0 / width : 0.0;
+  current_ = 0;
+  year_end_ = inverse_width_ == 0.0 ? 1 : static_cast<std::int64_t>(size);
+  year_open_ = true;
+  std::vector<double>().swap(scratch_);  // not kept: 8 bytes a ball between years
+  std::uint32_t pending = overflow_;
+  overflow_ = kNone;
+  outside_heap_ = 0;
+  while (pending != kNone) {
+    const std::uint32_t owner = pending;
+    pending = link_next_[owner];
+    places_[owner] = Place::none;
+    insert(owner);
+  }
+  return true;
+}
+
+void EventQueue::heap_push(std::uint32_t owner) {
+  places_[owner] = Place::heap;
+  heap_.push_back(owner);
+  const auto position = static_cast<std::uint32_t>(heap_.size() - 1);
+  heap_place(position, owner);
+  heap_sift_up(position);
+}
+
+void EventQueue::heap_remove(std::uint32_t owner) {
+  const std::uint32_t position = link_next_[owner];
+  const std::uint32_t last = heap_.back();
+  heap_.pop_back();
+  places_[owner] = Place::none;
+  link_next_[owner] = kNone;
+  if (last == owner) return;
+  heap_place(position, last);
+  heap_sift_up(position);
+  heap_sift_down(link_next_[last]);
+}
+
+void EventQueue::heap_sift_up(std::uint32_t position) {
+  const std::uint32_t owner = heap_[position];
   while (position > 0) {
     const std::uint32_t parent = (position - 1) / 2;
-    if (!before(position, parent)) return;
-    swap_positions(position, parent);
+    if (!before(owner, heap_[parent])) break;
+    heap_place(position, heap_[parent]);
     position = parent;
   }
+  heap_place(position, owner);
 }
 
-void EventQueue::sift_down(std::uint32_t position) {
+void EventQueue::heap_sift_down(std::uint32_t position) {
+  const std::uint32_t owner = heap_[position];
   const auto size = static_cast<std::uint32_t>(heap_.size());
   for (;;) {
     const std::uint32_t left = 2 * position + 1;
-    if (left >= size) return;
+    if (left >= size) break;
     const std::uint32_t right = left + 1;
-    const std::uint32_t child = right < size && before(right, left) ? right : left;
-    if (!before(child, position)) return;
-    swap_positions(position, child);
+    const std::uint32_t child = right < size && before(heap_[right], heap_[left]) ? right : left;
+    if (!before(heap_[child], owner)) break;
+    heap_place(position, heap_[child]);
     position = child;
   }
+  heap_place(position, owner);
 }
 
 }  // namespace carom::detail

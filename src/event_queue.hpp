@@ -1,6 +1,11 @@
 // carom internal: the world's event queue. One slot per ball holding that ball's earliest
-// predicted event, kept in an indexed binary min-heap so that a slot can be replaced in
-// O(log n) when its ball is re-predicted (rather than queueing every predicted pair).
+// predicted event (rather than every predicted pair), replaced whenever its ball is
+// re-predicted. A calendar queue in the style of Paul (J. Comput. Phys. 221 (2007) 615): time is
+// cut into buckets of equal width; the events of the current bucket sit in a small indexed
+// binary heap (in the exact event order), later buckets of the current "year" in unsorted
+// lists, and events beyond the year in one overflow list that is sorted into buckets when the
+// year ends (with the width re-tuned to the events then pending). Replacing a slot and taking
+// the earliest are O(1) on average. Design: docs/world.md, "One event per ball".
 #pragma once
 
 #include <cstdint>
@@ -14,33 +19,67 @@ class EventQueue {
  public:
   // Slots for balls 0 .. count-1, all holding "nothing will happen".
   void reset(std::uint32_t count);
-  // Adds a slot for ball `owner` (== current count) holding "nothing will happen".
-  void add_slot();
   void set(std::uint32_t owner, const Event& event);
-  [[nodiscard]] const Event& slot(std::uint32_t owner) const { return events_[owner]; }
-  [[nodiscard]] const Event& top() const { return events_[heap_.front().owner]; }
-  [[nodiscard]] bool empty() const { return heap_.empty(); }
+  [[nodiscard]] Event slot(std::uint32_t owner) const { return unpack(owner); }
+  [[nodiscard]] double time_of(std::uint32_t owner) const { return events_[owner].time; }
+  // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
+  // slot holds a finite time. Not const: it may open the next bucket or year.
+  [[nodiscard]] Event top();
+  // The largest ball index an event can name (two bits of the owner field hold the kind).
+  static constexpr std::uint32_t kMaxBalls = 1u << 30;
 
  private:
-  void sift_up(std::uint32_t position);
-  void sift_down(std::uint32_t position);
-  void swap_positions(std::uint32_t a, std::uint32_t b);
-  // The heap keeps each event's time beside its owner, so that sifting compares times without
-  // reaching into events_; only equal times need the full order.
+  // An event without its partner's version, 16 bytes.
   struct Entry {
     double time;
-    std::uint32_t owner;
+    std::uint32_t owner_and_kind;  // owner in the low 30 bits, the EventKind above
+    std::uint32_t partner;
+    [[nodiscard]] std::uint32_t owner() const { return owner_and_kind & (kMaxBalls - 1); }
+    [[nodiscard]] EventKind kind() const { return static_cast<EventKind>(owner_and_kind >> 30); }
   };
-  [[nodiscard]] bool before(std::uint32_t position_a, std::uint32_t position_b) const {
-    const Entry& a = heap_[position_a];
-    const Entry& b = heap_[position_b];
-    if (a.time != b.time) return a.time < b.time;
-    return earlier(events_[a.owner], events_[b.owner]);
-  }
+  enum class Place : std::uint8_t { none, heap, bucket, overflow };
 
-  std::vector<Event> events_;            // by ball
-  std::vector<Entry> heap_;              // in heap order
-  std::vector<std::uint32_t> position_;  // by ball: where it is in heap_
+  [[nodiscard]] Event unpack(std::uint32_t owner) const;
+  // The order of world_event.hpp's `earlier`, on entries.
+  [[nodiscard]] static bool before(const Entry& a, const Entry& b);
+  [[nodiscard]] bool before(std::uint32_t a, std::uint32_t b) const {
+    return before(events_[a], events_[b]);
+  }
+  // The bucket a time falls in, counted from origin_; kFarBucket for times beyond any year.
+  [[nodiscard]] std::int64_t bucket_of(double time) const;
+
+  void insert(std::uint32_t owner);
+  void remove(std::uint32_t owner);
+  void list_push(std::uint32_t& head, std::uint32_t owner, Place place);
+  void list_remove(std::uint32_t& head, std::uint32_t owner);
+  void heap_push(std::uint32_t owner);
+  void heap_remove(std::uint32_t owner);
+  void heap_sift_up(std::uint32_t position);
+  void heap_sift_down(std::uint32_t position);
+  void heap_place(std::uint32_t position, std::uint32_t owner) {
+    heap_[position] = owner;
+    link_next_[owner] = position;  // a heap member's "next" is its heap position
+  }
+  // Starts a new year from the overflow list; false when no finite event is left.
+  bool open_year();
+
+  // By ball.
+  std::vector<Entry> events_;
+  std::vector<std::uint32_t> partner_versions_;
+  std::vector<Place> places_;
+  std::vector<std::uint32_t> link_next_;  // list successor, or heap position
+  std::vector<std::uint32_t> link_prev_;  // list predecessor (kNone at a list's head)
+
+  std::vector<std::uint32_t> heap_;     // owners of the current bucket's events, a binary heap
+  std::vector<std::uint32_t> buckets_;  // list heads of the year's buckets, by bucket % size
+  std::uint32_t overflow_ = 0;          // list head of events beyond the year (kNone: empty)
+  std::uint64_t outside_heap_ = 0;      // finite events in buckets or the overflow list
+  bool year_open_ = false;
+  std::int64_t current_ = 0;   // the bucket whose events are in heap_
+  std::int64_t year_end_ = 0;  // the first bucket past the year
+  double origin_ = 0.0;        // the time where bucket 0 starts
+  double inverse_width_ = 0.0;
+  std::vector<double> scratch_;  // open_year's times (freed after each use)
 };
 
 }  // namespace carom::detail

@@ -14,7 +14,8 @@ void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool p
   periodic_ = periodic;
   const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
   head_.assign(cells, kNoBall);
-  walls_.assign(cells, {});
+  wall_start_.clear();
+  wall_ids_.clear();
   next_.assign(ball_capacity, kNoBall);
   prev_.assign(ball_capacity, kNoBall);
   ball_cell_.assign(ball_capacity, kNoBall);
@@ -35,14 +36,6 @@ std::int32_t Grid::column_of(double x) const {
 std::int32_t Grid::row_of(double y) const {
   const double c = std::floor((y - lower_.y) / cell_.y);
   return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
-}
-
-Vec2 Grid::cell_lower(std::int32_t cell) const {
-  return {lower_.x + cell_.x * column(cell), lower_.y + cell_.y * row(cell)};
-}
-
-Vec2 Grid::cell_upper(std::int32_t cell) const {
-  return {lower_.x + cell_.x * (column(cell) + 1), lower_.y + cell_.y * (row(cell) + 1)};
 }
 
 void Grid::insert(std::uint32_t ball, std::int32_t cell) {
@@ -68,16 +61,36 @@ void Grid::erase(std::uint32_t ball) {
   ball_cell_[ball] = kNoBall;
 }
 
-void Grid::add_wall(std::uint32_t wall, Vec2 lower, Vec2 upper) {
-  // Grown by one cell: a ball whose centre is in a cell reaches at most its radius (below the
-  // cell size) beyond it, and a ball logically in a cell may sit a rounding outside it.
-  const std::int32_t x0 = column_of(lower.x - cell_.x);
-  const std::int32_t x1 = column_of(upper.x + cell_.x);
-  const std::int32_t y0 = row_of(lower.y - cell_.y);
-  const std::int32_t y1 = row_of(upper.y + cell_.y);
-  for (std::int32_t y = y0; y <= y1; ++y) {
-    for (std::int32_t x = x0; x <= x1; ++x)
-      walls_[static_cast<std::size_t>(index(x, y))].push_back(wall);
+void Grid::set_walls(std::span<const Vec2> lower, std::span<const Vec2> upper) {
+  wall_start_.clear();
+  wall_ids_.clear();
+  if (lower.empty()) return;
+  const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  // Each wall is listed in every cell its box, grown by one cell, overlaps: a ball whose centre
+  // is in a cell reaches at most its radius (below the cell size) beyond it, and a ball
+  // logically in a cell may sit a rounding outside it. Two passes: count, then fill, walls in
+  // ascending id order within each cell.
+  struct Span {
+    std::int32_t x0, x1, y0, y1;
+  };
+  std::vector<Span> spans(lower.size());
+  wall_start_.assign(cells + 1, 0);
+  for (std::size_t w = 0; w < lower.size(); ++w) {
+    spans[w] = {column_of(lower[w].x - cell_.x), column_of(upper[w].x + cell_.x),
+                row_of(lower[w].y - cell_.y), row_of(upper[w].y + cell_.y)};
+    for (std::int32_t y = spans[w].y0; y <= spans[w].y1; ++y) {
+      for (std::int32_t x = spans[w].x0; x <= spans[w].x1; ++x)
+        ++wall_start_[static_cast<std::size_t>(index(x, y)) + 1];
+    }
+  }
+  for (std::size_t c = 0; c < cells; ++c) wall_start_[c + 1] += wall_start_[c];
+  wall_ids_.resize(wall_start_[cells]);
+  std::vector<std::uint32_t> fill(wall_start_.begin(), wall_start_.end() - 1);
+  for (std::size_t w = 0; w < lower.size(); ++w) {
+    for (std::int32_t y = spans[w].y0; y <= spans[w].y1; ++y) {
+      for (std::int32_t x = spans[w].x0; x <= spans[w].x1; ++x)
+        wall_ids_[fill[static_cast<std::size_t>(index(x, y))]++] = static_cast<std::uint32_t>(w);
+    }
   }
 }
 

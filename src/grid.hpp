@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "carom/vec2.hpp"
@@ -35,8 +36,15 @@ class Grid {
   [[nodiscard]] std::int32_t row_of(double y) const;
   [[nodiscard]] std::int32_t cell_of(Vec2 p) const { return index(column_of(p.x), row_of(p.y)); }
   // The cell's lower-left corner and upper-right corner.
-  [[nodiscard]] Vec2 cell_lower(std::int32_t cell) const;
-  [[nodiscard]] Vec2 cell_upper(std::int32_t cell) const;
+  [[nodiscard]] Vec2 cell_lower(std::int32_t cell) const {
+    return cell_lower(column(cell), row(cell));
+  }
+  [[nodiscard]] Vec2 cell_upper(std::int32_t cell) const {
+    return {lower_.x + cell_.x * (column(cell) + 1), lower_.y + cell_.y * (row(cell) + 1)};
+  }
+  [[nodiscard]] Vec2 cell_lower(std::int32_t cx, std::int32_t cy) const {
+    return {lower_.x + cell_.x * cx, lower_.y + cell_.y * cy};
+  }
 
   void insert(std::uint32_t ball, std::int32_t cell);
   void erase(std::uint32_t ball);
@@ -46,9 +54,12 @@ class Grid {
   }
   [[nodiscard]] std::int32_t next_ball(std::uint32_t ball) const { return next_[ball]; }
 
-  void add_wall(std::uint32_t wall, Vec2 lower, Vec2 upper);
-  [[nodiscard]] const std::vector<std::uint32_t>& walls(std::int32_t cell) const {
-    return walls_[static_cast<std::size_t>(cell)];
+  // Lists the walls, given by their bounding boxes (wall k: lower[k], upper[k]), in the cells.
+  void set_walls(std::span<const Vec2> lower, std::span<const Vec2> upper);
+  [[nodiscard]] std::span<const std::uint32_t> walls(std::int32_t cell) const {
+    if (wall_start_.empty()) return {};
+    const auto c = static_cast<std::size_t>(cell);
+    return {wall_ids_.data() + wall_start_[c], wall_ids_.data() + wall_start_[c + 1]};
   }
 
   // Calls visit(neighbour_cell) for the 3×3 block around `cell`, each cell once (wrapping in a
@@ -91,11 +102,14 @@ class Grid {
   std::int32_t nx_ = 1;
   std::int32_t ny_ = 1;
   bool periodic_ = false;
-  std::vector<std::int32_t> head_;                 // by cell: first ball, or kNoBall
-  std::vector<std::int32_t> next_;                 // by ball
-  std::vector<std::int32_t> prev_;                 // by ball
-  std::vector<std::int32_t> ball_cell_;            // by ball, or kNoBall
-  std::vector<std::vector<std::uint32_t>> walls_;  // by cell
+  std::vector<std::int32_t> head_;       // by cell: first ball, or kNoBall
+  std::vector<std::int32_t> next_;       // by ball
+  std::vector<std::int32_t> prev_;       // by ball
+  std::vector<std::int32_t> ball_cell_;  // by ball, or kNoBall
+  // The cells' wall lists, concatenated (cell c's: wall_ids_[wall_start_[c] .. wall_start_[c+1]]);
+  // both empty in a world without walls, so cells then cost only their list head.
+  std::vector<std::uint32_t> wall_start_;
+  std::vector<std::uint32_t> wall_ids_;
 };
 
 }  // namespace carom::detail

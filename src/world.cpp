@@ -39,7 +39,7 @@ void validate_ball_def(const char* function, const BallDef& def) {
 std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   if (id.is_null()) refuse(function, "id", "null", "must be a ball of this world");
   if (id.index >= balls.size() || !balls[id.index].alive ||
-      balls[id.index].generation != id.generation) {
+      infos[id.index].generation != id.generation) {
     refuse(function, "id",
            "{" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}",
            "is stale: that ball was removed (or never belonged to this world)");
@@ -65,15 +65,24 @@ std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) cons
       return "it reaches outside the box";
     }
   }
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const Vec2 nearest = detail::nearest_point(walls[w], p);
-    if (length_squared(nearest - p) < r * r) {
-      return "it overlaps wall " + std::to_string(w);
+  const auto overlaps_wall = [&](std::uint32_t w) {
+    return length_squared(detail::nearest_point(walls[w], p) - p) < r * r;
+  };
+  if (!grid_valid) {
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+      if (overlaps_wall(w)) return "it overlaps wall " + std::to_string(w);
     }
+    return {};
   }
-  if (!grid_valid) return {};
+  // The callers made the grid fit this ball (ensure_grid): a wall within r of p is listed in
+  // p's cell, since walls are listed in every cell their box grown by a cell overlaps. Lowest id
+  // first, as the full scan would report.
+  const std::int32_t home = grid.cell_of(wrap_into_cell(p));
+  for (const std::uint32_t w : grid.walls(home)) {
+    if (overlaps_wall(w)) return "it overlaps wall " + std::to_string(w);
+  }
   std::string found;
-  grid.for_each_neighbour(grid.cell_of(wrap_into_cell(p)), [&](std::int32_t cell) {
+  grid.for_each_neighbour(home, [&](std::int32_t cell) {
     for (std::int32_t j = grid.first_ball(cell); j != detail::kNoBall && found.empty();
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
@@ -143,8 +152,13 @@ BallId World::add_ball(const BallDef& def) {
     slot = w.free_slots.back();
     w.free_slots.pop_back();
   } else {
+    if (w.balls.size() >= detail::EventQueue::kMaxBalls) {
+      refuse(kFunction, "def", "-",
+             "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
+    }
     slot = static_cast<std::uint32_t>(w.balls.size());
     w.balls.emplace_back();
+    w.infos.emplace_back();
     w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));
   }
   BallSlot& b = w.balls[slot];
@@ -152,12 +166,13 @@ BallId World::add_ball(const BallDef& def) {
   b.velocity = def.velocity;
   b.local_time = w.time;
   b.radius = def.radius;
-  b.mass = def.mass;
   b.inverse_mass = def.mass == kImmovable ? 0.0 : 1.0 / def.mass;
-  b.restitution = def.restitution.value_or(w.def.restitution);
-  b.last_contact_time = -std::numeric_limits<double>::infinity();
-  b.user_data = def.user_data;
   b.alive = true;
+  detail::BallInfo& info = w.infos[slot];
+  info.mass = def.mass;
+  info.restitution = def.restitution.value_or(w.def.restitution);
+  info.last_contact_time = -std::numeric_limits<double>::infinity();
+  info.user_data = def.user_data;
   ++b.version;
   ++w.live_count;
   w.largest_radius = std::max(w.largest_radius, def.radius);
@@ -173,7 +188,8 @@ void World::remove_ball(BallId id) {
   w.grid.erase(slot);
   b.alive = false;
   ++b.version;
-  b.generation = b.generation == std::numeric_limits<std::uint32_t>::max() ? 1 : b.generation + 1;
+  std::uint32_t& generation = w.infos[slot].generation;
+  generation = generation == std::numeric_limits<std::uint32_t>::max() ? 1 : generation + 1;
   w.free_slots.push_back(slot);
   --w.live_count;
   w.events_valid = false;
@@ -182,7 +198,7 @@ void World::remove_ball(BallId id) {
 bool World::contains(BallId id) const noexcept {
   const Impl& w = *impl_;
   return !id.is_null() && id.index < w.balls.size() && w.balls[id.index].alive &&
-         w.balls[id.index].generation == id.generation;
+         w.infos[id.index].generation == id.generation;
 }
 
 std::vector<BallId> World::balls() const {
@@ -265,6 +281,20 @@ std::uint64_t World::run_collisions(std::uint64_t count) {
   return impl_->run(std::numeric_limits<double>::infinity(), count);
 }
 
+std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
+  constexpr const char* kFunction = "World::run_collisions";
+  if (std::isnan(time_limit)) refuse(kFunction, "time_limit", "nan", "must be a number");
+  if (time_limit < impl_->time) {
+    refuse(kFunction, "time_limit", number(time_limit),
+           "must not be before the world's time " + number(impl_->time));
+  }
+  if (count == 0) {
+    impl_->contacts.clear();
+    return 0;
+  }
+  return impl_->run(time_limit, count);
+}
+
 void World::set_stop_condition(std::function<bool(const ContactEvent&)> condition) {
   impl_->stop_condition = std::move(condition);
 }
@@ -272,6 +302,16 @@ void World::set_stop_condition(std::function<bool(const ContactEvent&)> conditio
 bool World::stopped_early() const noexcept { return impl_->stopped; }
 
 std::span<const ContactEvent> World::contacts() const noexcept { return impl_->contacts; }
+
+void World::set_contact_recording(bool enabled) noexcept {
+  impl_->record_contacts = enabled;
+  if (!enabled) {
+    impl_->contacts.clear();
+    impl_->contacts.shrink_to_fit();
+  }
+}
+
+bool World::contact_recording() const noexcept { return impl_->record_contacts; }
 
 double World::time() const noexcept { return impl_->time; }
 
@@ -288,26 +328,29 @@ double World::radius(BallId id) const {
   return impl_->balls[impl_->slot_of("World::radius", id)].radius;
 }
 
-double World::mass(BallId id) const { return impl_->balls[impl_->slot_of("World::mass", id)].mass; }
+double World::mass(BallId id) const { return impl_->infos[impl_->slot_of("World::mass", id)].mass; }
 
 std::uint64_t World::user_data(BallId id) const {
-  return impl_->balls[impl_->slot_of("World::user_data", id)].user_data;
+  return impl_->infos[impl_->slot_of("World::user_data", id)].user_data;
 }
 
 std::size_t World::ball_count() const noexcept { return impl_->live_count; }
 
 double World::kinetic_energy() const noexcept {
   double energy = 0.0;
-  for (const BallSlot& b : impl_->balls) {
-    if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * b.mass * length_squared(b.velocity);
+  for (std::size_t i = 0; i < impl_->balls.size(); ++i) {
+    const BallSlot& b = impl_->balls[i];
+    const double mass = impl_->infos[i].mass;
+    if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * mass * length_squared(b.velocity);
   }
   return energy;
 }
 
 Vec2 World::momentum() const noexcept {
   Vec2 total;
-  for (const BallSlot& b : impl_->balls) {
-    if (b.alive && b.inverse_mass > 0.0) total += b.velocity * b.mass;
+  for (std::size_t i = 0; i < impl_->balls.size(); ++i) {
+    const BallSlot& b = impl_->balls[i];
+    if (b.alive && b.inverse_mass > 0.0) total += b.velocity * impl_->infos[i].mass;
   }
   return total;
 }
@@ -367,43 +410,6 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   w.grid.insert(slot, w.grid.cell_of(target));
   w.events_valid = false;
   return target;
-}
-
-std::optional<std::string> World::audit(double tolerance) const {
-  const Impl& w = *impl_;
-  for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
-    const BallSlot& a = w.balls[i];
-    if (!a.alive) continue;
-    const Vec2 p = w.position_at(i, w.time);
-    if (!is_finite(p) || !is_finite(a.velocity)) {
-      return "ball " + std::to_string(i) + " has a non-finite position or velocity";
-    }
-    if (w.def.boundary == Boundary::box) {
-      const double slack = tolerance * a.radius;
-      if (p.x - a.radius < w.def.lower.x - slack || p.x + a.radius > w.def.upper.x + slack ||
-          p.y - a.radius < w.def.lower.y - slack || p.y + a.radius > w.def.upper.y + slack) {
-        return "ball " + std::to_string(i) + " reaches outside the box";
-      }
-    }
-    for (std::size_t k = 0; k < w.walls.size(); ++k) {
-      const double gap = length(detail::nearest_point(w.walls[k], p) - p);
-      if (gap < a.radius * (1.0 - tolerance)) {
-        return "ball " + std::to_string(i) + " overlaps wall " + std::to_string(k) + " by " +
-               number(a.radius - gap);
-      }
-    }
-    for (std::uint32_t j = i + 1; j < w.balls.size(); ++j) {
-      const BallSlot& b = w.balls[j];
-      if (!b.alive) continue;
-      const double reach = a.radius + b.radius;
-      const double gap = length(w.minimum_image(w.position_at(j, w.time) - p));
-      if (gap < reach * (1.0 - tolerance)) {
-        return "balls " + std::to_string(i) + " and " + std::to_string(j) + " overlap by " +
-               number(reach - gap);
-      }
-    }
-  }
-  return std::nullopt;
 }
 
 }  // namespace carom

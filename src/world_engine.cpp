@@ -25,6 +25,15 @@ constexpr double kOpenGrowth = 0.5;
 // rather than the grid huge.
 constexpr double kCellsPerBall = 4.0;
 constexpr double kMinCells = 1024.0;
+// A grid is re-planned while balls are added once a re-plan would make its cells this much
+// smaller per side (the ball count has grown about 4 times: O(1) amortised per add_ball) ...
+constexpr double kAddCoarseness = 2.0;
+// ... and before a run once it would make them any smaller beyond the floor-rounding of the cell
+// count, so that a run never keeps cells coarser than it needs (a run's re-plan is paid once).
+constexpr double kRunCoarseness = 1.01;
+// Events without a contact before run_collisions first tries to prove that none will come
+// (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
+constexpr std::uint64_t kEventsBeforeProof = 64;
 
 }  // namespace
 
@@ -40,9 +49,27 @@ void World::Impl::ensure_grid(Vec2 extra_point, double extra_radius) {
     const bool inside =
         def.boundary != Boundary::open || (extra_point.x >= lower.x && extra_point.x <= upper.x &&
                                            extra_point.y >= lower.y && extra_point.y <= upper.y);
-    if (cell_fits && inside) return;
+    // Re-planned as balls are added: the cell count allowed grows with the balls, and each
+    // re-plan (O(N)) comes only after the count has grown by a constant factor (kAddCoarseness),
+    // so adding balls costs O(1) amortised and every add_ball scans only a few balls.
+    if (cell_fits && inside && !grid_too_coarse(live_count + 1, kAddCoarseness)) return;
   }
   rebuild_grid(extra_point, extra_radius);
+}
+
+double World::Impl::wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
+                                     double largest) const {
+  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
+  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(ball_total));
+  if (extent_x / cell * (extent_y / cell) > max_cells) {
+    cell = std::sqrt(extent_x * extent_y / max_cells);
+  }
+  if (def.boundary == Boundary::periodic) {
+    // Three cells per axis at least, so the 3×3 block never holds a cell twice (add_ball keeps
+    // every diameter below this).
+    cell = std::min(cell, std::min(extent_x, extent_y) / 3.0);
+  }
+  return cell;
 }
 
 void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
@@ -63,8 +90,9 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
     lower = {std::min(lower.x, wall_lower.x), std::min(lower.y, wall_lower.y)};
     upper = {std::max(upper.x, wall_upper.x), std::max(upper.y, wall_upper.y)};
   }
-  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
+  const std::size_t ball_total = live_count + 1;
   if (def.boundary == Boundary::open) {
+    const double cell = wanted_cell_size(upper.x - lower.x, upper.y - lower.y, ball_total, largest);
     const double room = kOpenGrowth * std::max(upper.x - lower.x, upper.y - lower.y) + 2.0 * cell;
     lower -= Vec2{room, room};
     upper += Vec2{room, room};
@@ -73,15 +101,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
     upper = def.upper;
   }
   const Vec2 extent = upper - lower;
-  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
-  if (extent.x / cell * (extent.y / cell) > max_cells) {
-    cell = std::sqrt(extent.x * extent.y / max_cells);
-  }
-  if (def.boundary == Boundary::periodic) {
-    // Three cells per axis at least, so the 3×3 block never holds a cell twice (add_ball keeps
-    // every diameter below this).
-    cell = std::min(cell, std::min(extent.x, extent.y) / 3.0);
-  }
+  const double cell = wanted_cell_size(extent.x, extent.y, ball_total, largest);
   const auto nx = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.x / cell)));
   const auto ny = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.y / cell)));
   grid.setup(lower, {extent.x / nx, extent.y / ny}, nx, ny, def.boundary == Boundary::periodic,
@@ -89,28 +109,26 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive) grid.insert(i, grid.cell_of(position_at(i, time)));
   }
-  for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    Vec2 wall_lower;
-    Vec2 wall_upper;
-    detail::bounds(walls[w], wall_lower, wall_upper);
-    grid.add_wall(w, wall_lower, wall_upper);
+  std::vector<Vec2> wall_lower(walls.size());
+  std::vector<Vec2> wall_upper(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
   }
+  grid.set_walls(wall_lower, wall_upper);
   grid_valid = true;
   events_valid = false;
 }
 
-// A grid built while balls were being added may have cells far larger than the balls now need
-// (its cell count was capped for the few balls there were); more balls per cell means more pairs
-// per prediction.
-bool World::Impl::grid_too_coarse() const {
-  const double largest = largest_radius;
-  const double wanted = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
-  const Vec2 cell = grid.cell_size();
+// Whether a re-plan for `ball_total` balls over the grid's present extent would make cells
+// smaller by more than `coarseness` (per side). The grid planned while few balls were there has
+// few cells (at most kCellsPerBall per ball); more balls per cell means more pairs per prediction.
+bool World::Impl::grid_too_coarse(std::size_t ball_total, double coarseness) const {
   const Vec2 extent = grid.upper() - grid.lower();
-  const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(live_count + 1));
-  const double capped = std::max(wanted, std::sqrt(extent.x * extent.y / max_cells));
-  constexpr double kCoarseness = 2.0;  // rebuild only when a finer grid would pay clearly
-  return std::min(cell.x, cell.y) > kCoarseness * capped;
+  const double cell = wanted_cell_size(extent.x, extent.y, ball_total, largest_radius);
+  const double planned_x = extent.x / std::max(1.0, std::floor(extent.x / cell));
+  const double planned_y = extent.y / std::max(1.0, std::floor(extent.y / cell));
+  const Vec2 now = grid.cell_size();
+  return now.x > coarseness * planned_x || now.y > coarseness * planned_y;
 }
 
 // ---- prediction ---------------------------------------------------------------------------
@@ -148,26 +166,29 @@ void World::Impl::predict(std::uint32_t ball) {
   Event best;
   best.owner = ball;
 
-  // Leaving the cell. In a box the outermost cells have no outer side to leave through.
+  // Leaving the cell, through the side it moves towards on each axis (x first on a tie). In a
+  // box the outermost cells have no outer side to leave through.
   const std::int32_t cell = grid.cell_of_ball(ball);
-  const Vec2 low = grid.cell_lower(cell);
-  const Vec2 high = grid.cell_upper(cell);
-  const bool wraps = def.boundary != Boundary::box;
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
-  auto consider_crossing = [&](double distance, double speed, std::uint32_t side, bool allowed) {
-    if (!allowed || speed == 0.0) return;
-    const double t = time + std::max(0.0, distance / speed);
+  const bool wraps = def.boundary != Boundary::box;
+  const Vec2 low = grid.cell_lower(cx, cy);
+  const Vec2 high = grid.cell_lower(cx + 1, cy + 1);  // the upper-right corner
+  if (v.x > 0.0 ? (wraps || cx + 1 < grid.nx()) : (v.x < 0.0 && (wraps || cx > 0))) {
+    const double distance = v.x > 0.0 ? high.x - p.x : low.x - p.x;
+    best.time = time + std::max(0.0, distance / v.x);
+    best.kind = EventKind::cell_crossing;
+    best.partner = v.x > 0.0 ? detail::kRight : detail::kLeft;
+  }
+  if (v.y > 0.0 ? (wraps || cy + 1 < grid.ny()) : (v.y < 0.0 && (wraps || cy > 0))) {
+    const double distance = v.y > 0.0 ? high.y - p.y : low.y - p.y;
+    const double t = time + std::max(0.0, distance / v.y);
     if (t < best.time) {
       best.time = t;
       best.kind = EventKind::cell_crossing;
-      best.partner = side;
+      best.partner = v.y > 0.0 ? detail::kUp : detail::kDown;
     }
-  };
-  consider_crossing(high.x - p.x, v.x, detail::kRight, v.x > 0.0 && (wraps || cx + 1 < grid.nx()));
-  consider_crossing(low.x - p.x, v.x, detail::kLeft, v.x < 0.0 && (wraps || cx > 0));
-  consider_crossing(high.y - p.y, v.y, detail::kUp, v.y > 0.0 && (wraps || cy + 1 < grid.ny()));
-  consider_crossing(low.y - p.y, v.y, detail::kDown, v.y < 0.0 && (wraps || cy > 0));
+  }
 
   // Walls listed in this cell.
   const Ball shape{p, b.radius};
@@ -184,13 +205,14 @@ void World::Impl::predict(std::uint32_t ball) {
   }
 
   // Balls in the neighbouring cells.
+  const bool movable = b.inverse_mass != 0.0;
   grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
     for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == ball) continue;
       const BallSlot& o = balls[other];
-      if (b.inverse_mass == 0.0 && o.inverse_mass == 0.0) continue;  // nothing can respond
+      if (!movable && o.inverse_mass == 0.0) continue;  // nothing can respond
       const Vec2 s = minimum_image(p - position_at(other, time));
       const detail::Crossing crossing =
           detail::entry_crossing(s, v - o.velocity, b.radius + o.radius, kFarFuture);
@@ -202,6 +224,8 @@ void World::Impl::predict(std::uint32_t ball) {
       candidate.partner = other;
       candidate.partner_version = o.version;
       if (detail::earlier(candidate, best)) best = candidate;
+      // Mirroring (docs/world.md): the time alone settles it unless the times are equal.
+      if (candidate.time > queue.time_of(other)) continue;
       Event mirrored = candidate;
       mirrored.owner = other;
       mirrored.partner = ball;
@@ -217,17 +241,30 @@ void World::Impl::predict(std::uint32_t ball) {
 std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   contacts.clear();
   stopped = false;
-  if (!grid_valid || grid_too_coarse()) rebuild_grid(Vec2{}, 0.0);
+  if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
   if (!events_valid) predict_all();
   std::uint64_t resolved = 0;
-  while (!queue.empty()) {
+  // Without an end time, a run must notice when contacts are over for good (two balls flying
+  // apart cross cells for ever). After a stretch of events without a contact it tries to prove
+  // it; each failed proof doubles the stretch before the next, so proofs (O(N²)) stay rare.
+  std::uint64_t without_contact = 0;
+  std::uint64_t next_proof = std::max<std::uint64_t>(kEventsBeforeProof, 2 * live_count);
+  for (;;) {
     const Event event = queue.top();
     if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;
-    if (!process(event)) continue;
+    if (!process(event)) {
+      if (end == kInfinity && ++without_contact >= next_proof) {
+        if (no_contact_ever()) break;
+        next_proof *= 2;
+        without_contact = 0;
+      }
+      continue;
+    }
+    without_contact = 0;
     ++resolved;
     ++collisions;
-    const bool stop = stop_condition && stop_condition(contacts.back());
+    const bool stop = stop_condition && stop_condition(last_contact);
     if (stop || resolved == max_contacts) {
       stopped = stop;
       return resolved;
@@ -264,10 +301,10 @@ double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t)
   // Inelastic collapse prevention (TC model): recently collided balls bounce elastically.
   const double recent = t - def.collapse_time;
   if (def.collapse_time > 0.0 &&
-      (balls[i].last_contact_time > recent || balls[j].last_contact_time > recent)) {
+      (infos[i].last_contact_time > recent || infos[j].last_contact_time > recent)) {
     return 1.0;
   }
-  return std::min(balls[i].restitution, balls[j].restitution);
+  return std::min(infos[i].restitution, infos[j].restitution);
 }
 
 bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) {
@@ -284,8 +321,8 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     const double impulse = (1.0 + restitution) * approach / (a.inverse_mass + b.inverse_mass);
     a.velocity -= normal * (impulse * a.inverse_mass);
     b.velocity += normal * (impulse * b.inverse_mass);
-    a.last_contact_time = t;
-    b.last_contact_time = t;
+    infos[i].last_contact_time = t;
+    infos[j].last_contact_time = t;
     const bool a_first = i < j;
     ContactEvent contact;
     contact.time = t;
@@ -297,7 +334,7 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     contact.point = a.position + between * (a.radius / reach);
     contact.approach_speed = approach;
     contact.impulse = impulse;
-    contacts.push_back(contact);
+    record(contact);
     resolved = true;
   }
   ++a.version;
@@ -319,11 +356,12 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   bool resolved = false;
   if (approach > 0.0) {
     const double restitution =
-        def.collapse_time > 0.0 && a.last_contact_time > t - def.collapse_time ? 1.0
-                                                                               : a.restitution;
+        def.collapse_time > 0.0 && infos[i].last_contact_time > t - def.collapse_time
+            ? 1.0
+            : infos[i].restitution;
     const double speed_change = (1.0 + restitution) * approach;
     a.velocity -= normal * speed_change;
-    a.last_contact_time = t;
+    infos[i].last_contact_time = t;
     ContactEvent contact;
     contact.time = t;
     contact.kind = ContactKind::ball_wall;
@@ -332,8 +370,8 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
     contact.point = point;
     contact.normal = normal;
     contact.approach_speed = approach;
-    contact.impulse = a.inverse_mass > 0.0 ? speed_change * a.mass : 0.0;
-    contacts.push_back(contact);
+    contact.impulse = a.inverse_mass > 0.0 ? speed_change * infos[i].mass : 0.0;
+    record(contact);
     resolved = true;
     ++a.version;
   }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "carom/world.hpp"
@@ -22,21 +24,27 @@ namespace detail {
 // the old side. The margin keeps every ball that can touch it within the 3×3 block regardless.
 inline constexpr double kCellMargin = 1e-6;
 
-// A ball slot. A ball moves in a straight line between its events, so it is stored at its own
-// local time: its position at any later time t is position + velocity·(t − local_time).
-struct BallSlot {
+// A ball slot: what prediction reads of every candidate partner, in one cache line. A ball
+// moves in a straight line between its events, so it is stored at its own local time: its
+// position at any later time t is position + velocity·(t − local_time).
+struct alignas(64) BallSlot {
   Vec2 position;
   Vec2 velocity;
   double local_time = 0.0;
   double radius = 0.0;
-  double mass = 0.0;
   double inverse_mass = 0.0;  // 0 for an immovable ball
+  std::uint32_t version = 0;  // bumped whenever the trajectory changes
+  bool alive = false;
+};
+
+// The rest of a ball, read only by contacts and the API (kept apart so that prediction's
+// scans of neighbours touch one cache line per ball).
+struct BallInfo {
+  double mass = 0.0;
   double restitution = 1.0;
   double last_contact_time = -std::numeric_limits<double>::infinity();
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
-  std::uint32_t version = 0;     // bumped whenever the trajectory changes
-  bool alive = false;
 };
 
 }  // namespace detail
@@ -44,6 +52,7 @@ struct BallSlot {
 struct World::Impl {
   WorldDef def;
   std::vector<detail::BallSlot> balls;
+  std::vector<detail::BallInfo> infos;    // by slot, beside balls
   std::vector<std::uint32_t> free_slots;  // reused last-freed first
   std::size_t live_count = 0;
   std::vector<detail::Wall> walls;
@@ -53,19 +62,23 @@ struct World::Impl {
   double largest_radius = 0.0;       // of every ball ever added (never lowered: cells stay valid)
 
   detail::Grid grid;
-  bool grid_valid = false;
   detail::EventQueue queue;
-  bool events_valid = false;
 
   double time = 0.0;
   std::uint64_t collisions = 0;
   std::vector<ContactEvent> contacts;
+  ContactEvent last_contact;  // the latest resolved, recorded or not (for the stop condition)
   std::function<bool(const ContactEvent&)> stop_condition;
+
+  // The flags together, so that they pad the structure once.
+  bool grid_valid = false;
+  bool events_valid = false;
+  bool record_contacts = true;
   bool stopped = false;
 
   // ---- handles ----
   [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
-  [[nodiscard]] BallId id_of(std::uint32_t slot) const { return {slot, balls[slot].generation}; }
+  [[nodiscard]] BallId id_of(std::uint32_t slot) const { return {slot, infos[slot].generation}; }
 
   // ---- geometry ----
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
@@ -93,18 +106,40 @@ struct World::Impl {
   // message; empty when the place is free.
   [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;
 
+  // ---- audit (world_audit.cpp): a description of the first violation found, or nothing ----
+  [[nodiscard]] std::optional<std::string> audit_all_pairs(double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_with_grid(double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_ball(std::uint32_t i, Vec2 p,
+                                                      double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
+                                                      double tolerance) const;
+  [[nodiscard]] std::optional<std::string> audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
+                                                      double tolerance) const;
+
+  void record(const ContactEvent& contact) {
+    last_contact = contact;
+    if (record_contacts) contacts.push_back(contact);
+  }
+
   // ---- engine (world_engine.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,
   // for an open world, cover every ball and wall), rebuilding it when it does not.
   void ensure_grid(Vec2 extra_point, double extra_radius);
   void rebuild_grid(Vec2 extra_point, double extra_radius);
-  [[nodiscard]] bool grid_too_coarse() const;
+  [[nodiscard]] bool grid_too_coarse(std::size_t ball_total, double coarseness) const;
+  // The side of a cell for `ball_total` balls over that extent whose largest radius is
+  // `largest`, before rounding the cell count.
+  [[nodiscard]] double wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
+                                        double largest) const;
   void predict_all();
   void predict(std::uint32_t ball);
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
   // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts.
   std::uint64_t run(double end, std::uint64_t max_contacts);
+  // True only when no contact can ever happen again, by the rules in world_no_contact.cpp;
+  // false means "not proven", not "a contact will happen".
+  [[nodiscard]] bool no_contact_ever() const;
   bool process(const detail::Event& event);  // true when a contact was resolved
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);

@@ -543,9 +543,7 @@ TEST(WorldApi, RunCollisionsResolvesExactlyThatMany) {
 // microseconds; 5 s is generous even under a sanitizer.
 constexpr unsigned kWatchdogSeconds = 5;
 
-// DISABLED: run_collisions does not yet prove that no contact will ever happen (cell crossings
-// go on for ever); open in issue 3. Run with --gtest_also_run_disabled_tests.
-TEST(WorldApiDeathTest, DISABLED_RunCollisionsStopsShortWhenNothingWillHappenInAnOpenWorld) {
+TEST(WorldApiDeathTest, RunCollisionsStopsShortWhenNothingWillHappenInAnOpenWorld) {
   World world;
   world.add_ball(ball_at({0.0, 0.0}, {-1.0, 0.0}));
   world.add_ball(ball_at({5.0, 0.0}, {1.0, 0.0}));  // moving apart for ever
@@ -560,7 +558,7 @@ TEST(WorldApiDeathTest, DISABLED_RunCollisionsStopsShortWhenNothingWillHappenInA
          "something else; killed by SIGALRM: it never returned)";
 }
 
-TEST(WorldApiDeathTest, DISABLED_RunCollisionsStopsShortWhenNothingWillHappenInAPeriodicCell) {
+TEST(WorldApiDeathTest, RunCollisionsStopsShortWhenNothingWillHappenInAPeriodicCell) {
   World world(WorldDef{Boundary::periodic, {0.0, 0.0}, {10.0, 10.0}});
   world.add_ball(ball_at({5.0, 5.0}, {1.0, 0.0}));  // alone: it wraps round for ever
   EXPECT_EXIT(
@@ -571,6 +569,70 @@ TEST(WorldApiDeathTest, DISABLED_RunCollisionsStopsShortWhenNothingWillHappenInA
       ::testing::ExitedWithCode(0), "")
       << "run_collisions(1) with no contact ahead must return 0 (killed by SIGALRM: it never "
          "returned)";
+}
+
+// Expects run_collisions(count) to return `expected` within the watchdog's time, in a child.
+void expect_run_collisions_returns(World& world, std::uint64_t count, std::uint64_t expected) {
+  EXPECT_EXIT(
+      {
+        alarm(kWatchdogSeconds);
+        std::_Exit(world.run_collisions(count) == expected ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "")
+      << "run_collisions(" << count << ") must return " << expected
+      << " (exit code 1: it returned something else; killed by SIGALRM: it never returned)";
+}
+
+TEST(WorldApiDeathTest, RunCollisionsProvesNothingWillHappenForBallsMovingAwayFromWalls) {
+  World world;
+  world.add_segment({{-10.0, -3.0}, {10.0, -3.0}});
+  world.add_arc({{0.0, 20.0}, 4.0, 0.0, std::numbers::pi});
+  world.add_ball(ball_at({-3.0, 0.0}, {-1.0, 0.5}));
+  world.add_ball(ball_at({3.0, 0.0}, {1.0, 0.25}));
+  world.add_ball(ball_at({0.0, 30.0}, {0.0, 2.0}));  // above the arc, leaving it
+  expect_run_collisions_returns(world, 4, 0);
+}
+
+TEST(WorldApiDeathTest, RunCollisionsProvesNothingWillHappenForParallelLanesInAPeriodicCell) {
+  World world(WorldDef{Boundary::periodic, {0.0, 0.0}, {10.0, 10.0}});
+  // Three lanes along x at different speeds, 2 apart (reach 1): they pass each other for ever.
+  world.add_ball(ball_at({1.0, 1.0}, {1.0, 0.0}));
+  world.add_ball(ball_at({1.0, 3.0}, {-2.0, 0.0}));
+  world.add_ball(ball_at({1.0, 5.0}, {0.5, 0.0}));
+  expect_run_collisions_returns(world, 1, 0);
+  // A slanted group moving together: no relative motion at all.
+  World together(WorldDef{Boundary::periodic, {0.0, 0.0}, {10.0, 10.0}});
+  for (int i = 0; i < 4; ++i) together.add_ball(ball_at({1.0 + 2.0 * i, 1.5 * i}, {0.3, 1.7}));
+  expect_run_collisions_returns(together, 1, 0);
+}
+
+TEST(WorldApi, RunCollisionsFindsAContactFarAwayAfterManyCrossings) {
+  // Not provable early (the pair approaches), so the proof must not cut the run short.
+  World world;
+  world.add_ball(ball_at({0.0, 0.0}, {1.0, 0.0}));
+  world.add_ball(ball_at({1000.0, 0.5}, {-1.0, 0.0}));
+  for (int i = 0; i < 20; ++i) world.add_ball(ball_at({-100.0 - 3.0 * i, 50.0}, {0.0, 1.0}));
+  ASSERT_EQ(world.run_collisions(1), 1u);
+  EXPECT_NEAR(world.time(), (1000.0 - std::sqrt(1.0 - 0.25)) / 2.0, kRoundingTol * 1000.0);
+}
+
+TEST(WorldApi, RunCollisionsWithATimeLimitStopsThereWhenNoContactComesFirst) {
+  // A slanted relative path on a torus: not provable either way, so a time limit bounds the run.
+  World world(WorldDef{Boundary::periodic, {0.0, 0.0}, {10.0, 10.0}});
+  const BallId a = world.add_ball(ball_at({1.0, 1.0}, {1.0, std::numbers::sqrt2}));
+  world.add_ball(ball_at({6.0, 6.0}, {-0.5, 0.25}));
+  const std::uint64_t resolved = world.run_collisions(1000000, 50.0);
+  ASSERT_LT(resolved, 1000000u);  // two balls cannot meet a million times in 50 time units
+  EXPECT_EQ(world.time(), 50.0);
+  // Against run_until: the same contacts to the same time.
+  World again(WorldDef{Boundary::periodic, {0.0, 0.0}, {10.0, 10.0}});
+  again.add_ball(ball_at({1.0, 1.0}, {1.0, std::numbers::sqrt2}));
+  again.add_ball(ball_at({6.0, 6.0}, {-0.5, 0.25}));
+  again.run_until(50.0);
+  EXPECT_EQ(again.contacts().size(), resolved);
+  EXPECT_EQ(again.position(again.balls()[0]), world.position(a));
+  EXPECT_THROW(world.run_collisions(1, 49.0), InvalidArgument);
+  EXPECT_THROW(world.run_collisions(1, kNaN), InvalidArgument);
 }
 
 TEST(WorldApi, RunCollisionsWithNothingMovingReturnsZero) {
@@ -754,6 +816,37 @@ TEST(WorldApi, ThousandSmallStepsMatchOneBigStep) {
     EXPECT_NEAR(split.velocity(id).x, whole.velocity(id).x, kSplitStateTol * kSpeed);
     EXPECT_NEAR(split.velocity(id).y, whole.velocity(id).y, kSplitStateTol * kSpeed);
   }
+}
+
+// ---- contact recording -----------------------------------------------------------------------
+
+TEST(WorldApi, ContactRecordingOffKeepsNoContactsAndChangesNothingElse) {
+  World recorded = box_of_balls(53, 6, 10.0);
+  World unrecorded = box_of_balls(53, 6, 10.0);
+  EXPECT_TRUE(unrecorded.contact_recording());  // on by default
+  unrecorded.set_contact_recording(false);
+  EXPECT_FALSE(unrecorded.contact_recording());
+  std::vector<ContactEvent> seen;
+  unrecorded.set_stop_condition([&seen](const ContactEvent& contact) {
+    seen.push_back(contact);  // a per-contact callback that never stops the run
+    return false;
+  });
+  ASSERT_EQ(recorded.run_collisions(300), 300u);
+  ASSERT_EQ(unrecorded.run_collisions(300), 300u);
+  EXPECT_TRUE(unrecorded.contacts().empty());
+  ASSERT_EQ(seen.size(), recorded.contacts().size());
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].time, recorded.contacts()[k].time) << k;
+    EXPECT_EQ(seen[k].a, recorded.contacts()[k].a) << k;
+    EXPECT_EQ(seen[k].b, recorded.contacts()[k].b) << k;
+  }
+  EXPECT_EQ(unrecorded.time(), recorded.time());
+  const std::vector<BallId> ids = recorded.balls();
+  for (const BallId id : ids) EXPECT_EQ(unrecorded.position(id), recorded.position(id));
+  unrecorded.set_contact_recording(true);
+  unrecorded.step(kStep);
+  recorded.step(kStep);
+  EXPECT_EQ(unrecorded.contacts().size(), recorded.contacts().size());
 }
 
 }  // namespace

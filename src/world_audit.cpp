@@ -1,0 +1,139 @@
+// World::audit: an independent check of the world's invariants, for tests and debugging. All
+// pairs for small worlds (or when asked), the grid's 3×3 blocks for large ones, in which case
+// the grid's own invariant (each ball inside the cell it is filed in) is checked too.
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "validate.hpp"
+#include "world_impl.hpp"
+
+namespace carom {
+
+using Violation = std::optional<std::string>;
+
+namespace {
+
+// Up to this many balls audit() checks every pair (O(N²)), which relies on nothing the engine
+// maintains; above it, the grid (O(N)).
+constexpr std::size_t kAllPairsAuditBalls = 256;
+
+std::string ball_name(std::uint32_t i) { return "ball " + std::to_string(i); }
+
+}  // namespace
+
+// The checks of one ball on its own: finite, inside a box.
+Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) const {
+  const Impl& w = *this;
+  const detail::BallSlot& a = w.balls[i];
+  if (!is_finite(p) || !is_finite(a.velocity)) {
+    return ball_name(i) + " has a non-finite position or velocity";
+  }
+  if (w.def.boundary == Boundary::box) {
+    const double slack = tolerance * a.radius;
+    if (p.x - a.radius < w.def.lower.x - slack || p.x + a.radius > w.def.upper.x + slack ||
+        p.y - a.radius < w.def.lower.y - slack || p.y + a.radius > w.def.upper.y + slack) {
+      return ball_name(i) + " reaches outside the box";
+    }
+  }
+  return std::nullopt;
+}
+
+Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
+                                  double tolerance) const {
+  const Impl& w = *this;
+  const double radius = w.balls[i].radius;
+  const double gap = length(detail::nearest_point(w.walls[k], p) - p);
+  if (gap < radius * (1.0 - tolerance)) {
+    return ball_name(i) + " overlaps wall " + std::to_string(k) + " by " +
+           detail::number_text(radius - gap);
+  }
+  return std::nullopt;
+}
+
+Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
+                                  double tolerance) const {
+  const Impl& w = *this;
+  const double reach = w.balls[i].radius + w.balls[j].radius;
+  const double gap = length(w.minimum_image(w.position_at(j, w.time) - p));
+  if (gap < reach * (1.0 - tolerance)) {
+    const std::uint32_t low = std::min(i, j);
+    const std::uint32_t high = std::max(i, j);
+    return "balls " + std::to_string(low) + " and " + std::to_string(high) + " overlap by " +
+           detail::number_text(reach - gap);
+  }
+  return std::nullopt;
+}
+
+Violation World::Impl::audit_all_pairs(double tolerance) const {
+  const Impl& w = *this;
+  for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
+    if (!w.balls[i].alive) continue;
+    const Vec2 p = w.position_at(i, w.time);
+    if (Violation v = audit_ball(i, p, tolerance)) return v;
+    for (std::uint32_t k = 0; k < w.walls.size(); ++k) {
+      if (Violation v = audit_wall(i, p, k, tolerance)) return v;
+    }
+    for (std::uint32_t j = i + 1; j < w.balls.size(); ++j) {
+      if (!w.balls[j].alive) continue;
+      if (Violation v = audit_pair(i, p, j, tolerance)) return v;
+    }
+  }
+  return std::nullopt;
+}
+
+// Finds every overlap that all pairs would find, provided each ball lies in the cell it is filed
+// in (checked here, to a rounding) and cells are at least a diameter wide (the grid's rule): two
+// overlapping balls are then in neighbouring cells, and a wall within a radius of a ball is
+// listed in the ball's cell.
+Violation World::Impl::audit_with_grid(double tolerance) const {
+  const Impl& w = *this;
+  for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
+    if (!w.balls[i].alive) continue;
+    const Vec2 p = w.position_at(i, w.time);
+    if (Violation v = audit_ball(i, p, tolerance)) return v;
+    const std::int32_t cell = grid.cell_of_ball(i);
+    if (cell == detail::kNoBall) return ball_name(i) + " is in no grid cell";
+    const Vec2 low = grid.cell_lower(cell);
+    const Vec2 high = grid.cell_upper(cell);
+    // The engine files a ball in its new cell at the computed crossing time, when its centre may
+    // sit a rounding on the old side; kCellMargin is the room the cells were sized with for that.
+    const Vec2 slack{detail::kCellMargin * (high.x - low.x + std::abs(p.x)),
+                     detail::kCellMargin * (high.y - low.y + std::abs(p.y))};
+    const bool outer_x = w.def.boundary == Boundary::box;  // a box's outer cells reach its walls
+    const bool inside =
+        (p.x >= low.x - slack.x || (outer_x && grid.column(cell) == 0)) &&
+        (p.x <= high.x + slack.x || (outer_x && grid.column(cell) + 1 == grid.nx())) &&
+        (p.y >= low.y - slack.y || (outer_x && grid.row(cell) == 0)) &&
+        (p.y <= high.y + slack.y || (outer_x && grid.row(cell) + 1 == grid.ny()));
+    if (!inside) {
+      return ball_name(i) + " at " + detail::vector_text(p) + " lies outside its grid cell " +
+             std::to_string(cell);
+    }
+    for (const std::uint32_t k : grid.walls(cell)) {
+      if (Violation v = audit_wall(i, p, k, tolerance)) return v;
+    }
+    Violation found;
+    grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
+      for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall && !found;
+           j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+        const auto other = static_cast<std::uint32_t>(j);
+        if (other > i) found = audit_pair(i, p, other, tolerance);
+      }
+    });
+    if (found) return found;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> World::audit(double tolerance) const {
+  const Impl& w = *impl_;
+  if (!w.grid_valid || w.live_count <= kAllPairsAuditBalls) return w.audit_all_pairs(tolerance);
+  return w.audit_with_grid(tolerance);
+}
+
+std::optional<std::string> World::audit_all_pairs(double tolerance) const {
+  return impl_->audit_all_pairs(tolerance);
+}
+
+}  // namespace carom

@@ -1,0 +1,89 @@
+// When can the world prove that no contact will ever happen again? run_collisions asks, after a
+// long stretch of events without a contact, so that it returns instead of following cell
+// crossings for ever. The rules and why they are exact: docs/world.md, "When nothing will happen".
+#include <algorithm>
+#include <cmath>
+
+#include "world_impl.hpp"
+
+namespace carom {
+
+namespace {
+
+// A motion counts as "moving apart" only when it does so by more than this fraction of the
+// product of the lengths involved: far above the rounding of one dot product (~1e-16), so the
+// engine, recomputing the same quantities later from re-rounded positions, agrees it is no
+// approach. A pair that is moving apart by less is simply not proven now, and asked again later.
+constexpr double kApartSlack = 1e-9;
+
+// True when s·u shows the distance |s + u·t| growing for every t >= 0, with room for rounding
+// (u exactly zero: the distance never changes, so nothing can approach).
+bool moving_apart(Vec2 s, Vec2 u) {
+  if (u == Vec2{}) return true;
+  return dot(s, u) > kApartSlack * length(s) * length(u);
+}
+
+}  // namespace
+
+bool World::Impl::no_contact_ever() const {
+  // Two balls of which at least one can respond are the only pairs that ever meet; both
+  // immovable pass through each other.
+  const auto can_meet = [&](std::uint32_t i, std::uint32_t j) {
+    return balls[i].inverse_mass != 0.0 || balls[j].inverse_mass != 0.0;
+  };
+
+  if (def.boundary == Boundary::periodic) {
+    if (!walls.empty()) return false;
+    // On a torus a pair that moves relative to the other generally meets it some day (its
+    // relative path winds densely, or closes on itself after a period that can be astronomically
+    // long), so only two cases are proved: no relative motion at all, and relative motion along
+    // one axis with the minimum-image gap across that axis wider than the reach (plus a margin
+    // far above the rounding that re-wrapping positions can accumulate).
+    const double margin = kApartSlack * std::max(period.x, period.y);
+    for (std::uint32_t i = 0; i < balls.size(); ++i) {
+      if (!balls[i].alive) continue;
+      const Vec2 pi = position_at(i, time);
+      for (std::uint32_t j = i + 1; j < balls.size(); ++j) {
+        if (!balls[j].alive || !can_meet(i, j)) continue;
+        const Vec2 u = balls[i].velocity - balls[j].velocity;
+        if (u == Vec2{}) continue;
+        const Vec2 s = minimum_image(pi - position_at(j, time));
+        const double reach = balls[i].radius + balls[j].radius + margin;
+        const bool along_x_clear = u.y == 0.0 && std::abs(s.y) > reach;
+        const bool along_y_clear = u.x == 0.0 && std::abs(s.x) > reach;
+        if (!along_x_clear && !along_y_clear) return false;
+      }
+    }
+    return true;
+  }
+
+  // Open world or box: straight lines in the plane. The distance from a point moving in a
+  // straight line to a convex set is a convex function of time, so once it grows it grows for
+  // ever. Ball pairs: |s + u·t| grows once s·u > 0. Segments (convex): the ball moves away from
+  // its nearest point. Arcs: the arc lies in its circle's disk (convex); a ball outside that
+  // disk by more than its radius and moving away from the centre never reaches the arc.
+  for (std::uint32_t i = 0; i < balls.size(); ++i) {
+    const detail::BallSlot& a = balls[i];
+    if (!a.alive) continue;
+    const Vec2 p = position_at(i, time);
+    for (const detail::Wall& wall : walls) {
+      if (a.velocity == Vec2{}) break;
+      if (wall.is_arc) {
+        const Vec2 from_center = p - wall.arc.center;
+        const double clear = (wall.arc.radius + a.radius) * (1.0 + kApartSlack);
+        if (!(length(from_center) > clear) || !moving_apart(from_center, a.velocity)) {
+          return false;
+        }
+      } else if (!moving_apart(p - detail::nearest_point(wall, p), a.velocity)) {
+        return false;
+      }
+    }
+    for (std::uint32_t j = i + 1; j < balls.size(); ++j) {
+      if (!balls[j].alive || !can_meet(i, j)) continue;
+      if (!moving_apart(p - position_at(j, time), a.velocity - balls[j].velocity)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace carom

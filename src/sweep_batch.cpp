@@ -218,7 +218,9 @@ double sweep_one(const BallPairArrays& p, std::size_t i) {
   const detail::Crossing crossing = detail::ball_pair_crossing(
       {p.a_x[i], p.a_y[i]}, {p.a_move_x[i], p.a_move_y[i]}, p.a_radius[i], {p.b_x[i], p.b_y[i]},
       {p.b_move_x[i], p.b_move_y[i]}, p.b_radius[i], kStepEnd);
-  return crossing.found ? crossing.t : kNoHit;
+  double t = kNoHit;
+  if (crossing.found) t = crossing.t;
+  return t;
 }
 
 // Whether t shares memory with an input array: then a block's inputs are gone once its t is

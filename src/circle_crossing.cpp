@@ -104,29 +104,8 @@ Vec2 direction_at(const ScaledMotion& motion, double t) noexcept {
   return normalized(scaled(motion.s, -length) + travelled);
 }
 
-ScaledMotion offset_motion(Vec2 p, Vec2 q, Vec2 velocity, double r1, double r2) noexcept {
-  const Vec2 s = p - q;
-  const double radius = r1 + r2;
-  if (is_finite(s) && std::isfinite(radius)) return {s, velocity, radius, 0, 0};
+ScaledMotion halved_offset_motion(Vec2 p, Vec2 q, Vec2 velocity, double r1, double r2) noexcept {
   return {p * 0.5 - q * 0.5, velocity, r1 * 0.5 + r2 * 0.5, 1, 0};
-}
-
-ScaledMotion ball_pair_motion(Vec2 pa, Vec2 va, double ra, Vec2 pb, Vec2 vb, double rb) noexcept {
-  ScaledMotion motion = offset_motion(pa, pb, va - vb, ra, rb);
-  if (!is_finite(motion.u)) {
-    motion.u = va * 0.5 - vb * 0.5;
-    motion.velocity_exponent = 1;
-  }
-  return motion;
-}
-
-Crossing ball_pair_crossing(Vec2 pa, Vec2 va, double ra, Vec2 pb, Vec2 vb, double rb,
-                            double horizon) noexcept {
-  const ScaledMotion motion = ball_pair_motion(pa, va, ra, pb, vb, rb);
-  // Coincident centres have no line of centres and no side to separate to: any relative
-  // motion deepens the overlap, so it counts as approaching.
-  if (motion.s == Vec2{}) return {motion.u != Vec2{}, 0.0};
-  return entry_crossing(motion, horizon);
 }
 
 }  // namespace carom::detail

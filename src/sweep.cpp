@@ -293,11 +293,21 @@ Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball&
   // Coincident centres count as approaching (see ball_pair_crossing).
   const ScaledMotion motion =
       detail::ball_pair_motion(a.center, velocity_a, a.radius, b.center, velocity_b, b.radius);
-  const detail::Crossing crossing = detail::ball_pair_crossing(
-      a.center, velocity_a, a.radius, b.center, velocity_b, b.radius, horizon);
+  // In the exact range (nearly always) the plain formulas, with one range test for all.
+  const bool plain = motion.length_exponent == 0 && motion.velocity_exponent == 0 &&
+                     detail::in_exact_range(motion.s, motion.u, motion.radius);
+  detail::Crossing crossing;
+  if (!plain) {
+    crossing = detail::ball_pair_crossing(motion, horizon);
+  } else if (motion.s == Vec2{}) {
+    crossing = {motion.u != Vec2{}, 0.0};
+  } else {
+    crossing = detail::entry_crossing_in_range(motion.s, motion.u, motion.radius, horizon);
+  }
 
   Impact out;
-  out.overlapping = detail::strictly_within_distance(motion.s, motion.radius);
+  out.overlapping = plain ? length_squared(motion.s) < motion.radius * motion.radius
+                          : detail::strictly_within_distance(motion.s, motion.radius);
   out.hit = crossing.found;
   out.t = crossing.found ? crossing.t : 0.0;
   out.a_at = advance(a.center, velocity_a, out.t);

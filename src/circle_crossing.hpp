@@ -54,7 +54,7 @@ struct ScaledMotion {
 // Whether the plain formulas below are exact to their rounding for this motion (see
 // exact_range.hpp). The batch kernel evaluates the same test.
 [[nodiscard]] inline bool in_exact_range(Vec2 s, Vec2 u, double radius) noexcept {
-  return vector_in_range(s) & vector_in_range(u) & square_in_range(radius * radius);
+  return vector_in_range(s) && vector_in_range(u) && square_in_range(radius * radius);
 }
 
 // The first time the point enters the circle while moving inwards, in [0, horizon]. A point

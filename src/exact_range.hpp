@@ -17,16 +17,14 @@ namespace carom::detail {
 inline constexpr double kSquareLow = 0x1p-500;
 inline constexpr double kSquareHigh = 0x1p+500;
 
-// (Bitwise & and |, not && and ||: both sides are cheap, and a branch per comparison costs more
-// than the comparisons on the hot path.)
 [[nodiscard]] inline bool square_in_range(double square) noexcept {
-  return (square >= kSquareLow) & (square <= kSquareHigh);  // false for NaN
+  return square >= kSquareLow && square <= kSquareHigh;  // false for NaN
 }
 
 // A vector is in range when its squared length is, or when it is exactly zero (a zero offset or
 // a zero velocity needs no scale: the formulas treat it exactly).
 [[nodiscard]] inline bool vector_in_range(Vec2 v) noexcept {
-  return square_in_range(dot(v, v)) | ((v.x == 0.0) & (v.y == 0.0));
+  return square_in_range(dot(v, v)) || v == Vec2{};
 }
 
 // Stands for the exponent of zero: below every finite double's (the least is -1074), so that

@@ -56,10 +56,15 @@ void keep_earliest(Candidate& best, double t, Vec2 point, Vec2 normal) {
 
 // p + v·t. Where v·t overflows but the sum is representable, it is taken of halves (exact for
 // such huge values); ±inf only when the true position lies beyond the double range.
+[[gnu::noinline, gnu::cold]] Vec2 advance_halved(Vec2 p, Vec2 v, double t) {
+  return (p * 0.5 + (v * 0.5) * t) * 2.0;
+}
+
 Vec2 advance(Vec2 p, Vec2 v, double t) {
   const Vec2 at = p + v * t;
-  if (is_finite(at)) return at;
-  return (p * 0.5 + (v * 0.5) * t) * 2.0;
+  if (is_finite(at)) [[likely]]
+    return at;
+  return advance_halved(p, v, t);
 }
 
 // The unit vector from one finite point to another, even where their difference overflows.
@@ -282,6 +287,15 @@ Impact finish_static(const Ball& ball, Vec2 velocity, Vec2 nearest, const Candid
   return out;
 }
 
+// Positions, their difference or the sum of radii overflowed: the direction comes from the
+// scaled motion instead; a contact point beyond the double range stays infinite.
+[[gnu::noinline, gnu::cold]] void normal_from_motion(const ScaledMotion& motion, double radius_a,
+                                                     Impact& out) {
+  const Vec2 towards_b = -direction_at(motion, out.t);
+  out.normal = towards_b == Vec2{} ? normalized(motion.u) : towards_b;
+  out.point = out.a_at + out.normal * radius_a;
+}
+
 Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball& b, Vec2 velocity_b,
                  double horizon) {
   validate_moving_ball(names, a, velocity_a, horizon);
@@ -291,11 +305,14 @@ Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball&
 
   // Relative motion (the tutorial's v3): A moves by velocity_a − velocity_b, B stands still.
   // Coincident centres count as approaching (see ball_pair_crossing).
-  const ScaledMotion motion =
-      detail::ball_pair_motion(a.center, velocity_a, a.radius, b.center, velocity_b, b.radius);
-  // In the exact range (nearly always) the plain formulas, with one range test for all.
-  const bool plain = motion.length_exponent == 0 && motion.velocity_exponent == 0 &&
-                     detail::in_exact_range(motion.s, motion.u, motion.radius);
+  // In the exact range (nearly always) the plain formulas, with one range test for all; the test
+  // fails for an overflowed (infinite) difference too, and then the motion is taken of halves.
+  const ScaledMotion direct{a.center - b.center, velocity_a - velocity_b, a.radius + b.radius, 0,
+                            0};
+  const bool plain = detail::in_exact_range(direct.s, direct.u, direct.radius);
+  const ScaledMotion motion = plain ? direct
+                                    : detail::ball_pair_motion(a.center, velocity_a, a.radius,
+                                                               b.center, velocity_b, b.radius);
   detail::Crossing crossing;
   if (!plain) {
     crossing = detail::ball_pair_crossing(motion, horizon);
@@ -316,12 +333,8 @@ Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball&
   const double reach = a.radius + b.radius;
   out.normal = between == Vec2{} ? normalized(motion.u) : normalized(between);
   out.point = out.a_at + between * (a.radius / reach);
-  if (!is_finite(out.normal) || !is_finite(out.point) || !std::isfinite(reach)) {
-    // Positions, their difference or the sum of radii overflowed: the direction comes from the
-    // scaled motion instead; a contact point beyond the double range stays infinite.
-    const Vec2 towards_b = -direction_at(motion, out.t);
-    out.normal = towards_b == Vec2{} ? normalized(motion.u) : towards_b;
-    out.point = out.a_at + out.normal * a.radius;
+  if (!is_finite(out.normal) || !is_finite(out.point) || !std::isfinite(reach)) [[unlikely]] {
+    normal_from_motion(motion, a.radius, out);
   }
   return out;
 }

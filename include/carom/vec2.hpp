@@ -58,7 +58,7 @@ struct Vec2 {
 [[nodiscard]] inline Vec2 normalized(Vec2 a) noexcept {
   const double len = length(a);
   if (!(len > 0.0)) return {};
-  if (len < 0x1p-900 || len > 0x1p+900) {
+  if (len < 0x1p-900 || len > 0x1p+900) [[unlikely]] {
     const Vec2 rescaled = a * (len < 1.0 ? 0x1p+600 : 0x1p-600);
     return rescaled / length(rescaled);
   }

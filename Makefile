@@ -46,7 +46,7 @@ run: deps
 # The browser tests need chromium (and emscripten, node-acorn, npm); .ci/run installs them.
 TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
 
-test: deps test-dev test-clang test-asan format-check lint $(TEST_WEB)
+test: deps test-dev test-clang test-asan test-tsan fuzz-smoke format-check lint $(TEST_WEB)
 	echo "make test: all checks passed"
 
 test-dev:
@@ -63,6 +63,35 @@ test-asan:
 	cmake --preset asan
 	cmake --build --preset asan
 	ctest --preset asan
+
+# ThreadSanitizer on the threads test: independent worlds stepped on several threads at once.
+.PHONY: test-tsan
+test-tsan:
+	cmake --preset tsan
+	cmake --build --preset tsan --target carom_thread_tests
+	ctest --preset tsan
+
+# libFuzzer (clang, the fuzz preset). The time-of-impact target starts from the committed seeds
+# in tests/fuzz/corpus/toi and keeps what it finds in build/fuzz/corpus/toi, so the committed
+# corpus changes only by hand. make fuzz runs each target for FUZZ_SECONDS.
+FUZZ_SECONDS ?= 600
+TOI_FUZZ := build/fuzz/tests/fuzz/carom_toi_fuzz
+.PHONY: fuzz-smoke fuzz fuzz-toi-build fuzz-toi-smoke fuzz-toi
+fuzz-smoke: fuzz-toi-smoke
+fuzz: fuzz-toi
+
+fuzz-toi-build:
+	cmake --preset fuzz >/dev/null
+	cmake --build --preset fuzz --target carom_toi_fuzz
+	mkdir -p build/fuzz/corpus/toi
+
+fuzz-toi-smoke: fuzz-toi-build
+	$(TOI_FUZZ) -max_total_time=20 -print_final_stats=1 -artifact_prefix=build/fuzz/ \
+	  build/fuzz/corpus/toi tests/fuzz/corpus/toi
+
+fuzz-toi: fuzz-toi-build
+	$(TOI_FUZZ) -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -artifact_prefix=build/fuzz/ \
+	  build/fuzz/corpus/toi tests/fuzz/corpus/toi
 
 # The long versions of the tests that make test runs short (CAROM_LONG_TESTS=1 un-skips them).
 test-long: deps

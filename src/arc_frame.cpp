@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "exact_range.hpp"
 #include "validate.hpp"
 
 namespace carom::detail {
@@ -23,12 +24,21 @@ bool ArcFrame::contains(Vec2 direction) const noexcept {
 }
 
 Vec2 ArcFrame::nearest(Vec2 p) const noexcept {
-  const Vec2 offset = p - center;
-  if (offset != Vec2{}) {
-    const Vec2 direction = normalized(offset);
+  if (p != center) {
+    // Halved where the difference overflows: the direction is the same, and halving such huge
+    // values is exact.
+    const Vec2 offset = p - center;
+    const Vec2 direction =
+        is_finite(offset) ? normalized(offset) : normalized(p * 0.5 - center * 0.5);
     if (contains(direction)) return center + direction * radius;
   }
-  return length_squared(p - start_point) <= length_squared(p - end_point) ? start_point : end_point;
+  const Vec2 to_start = p - start_point;
+  const Vec2 to_end = p - end_point;
+  if (is_finite(to_start) && is_finite(to_end)) {
+    return not_longer(to_start, to_end) ? start_point : end_point;
+  }
+  return not_longer(p * 0.5 - start_point * 0.5, p * 0.5 - end_point * 0.5) ? start_point
+                                                                            : end_point;
 }
 
 ArcFrame make_arc_frame(const char* function, const Arc& arc) {
@@ -36,6 +46,11 @@ ArcFrame make_arc_frame(const char* function, const Arc& arc) {
   require_positive(function, "arc.radius", arc.radius);
   require_finite(function, "arc.start_angle", arc.start_angle);
   require_finite(function, "arc.end_angle", arc.end_angle);
+  // Every point of the circle must be a finite position, or its touched points could not be
+  // reported.
+  const double reach = std::max(std::abs(arc.center.x), std::abs(arc.center.y)) + arc.radius;
+  require_that(std::isfinite(reach), function, "arc.radius", arc.radius,
+               "the arc's circle must lie within the double range (|center| + radius finite)");
   double span = arc.end_angle - arc.start_angle;
   // end = start + 2π computed in doubles can overshoot 2π by the rounding of the larger angle;
   // that is a full circle, not an error.

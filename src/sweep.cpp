@@ -2,18 +2,22 @@
 #include "carom/sweep.hpp"
 
 #include <algorithm>
-#include <numbers>
+#include <cmath>
 
 #include "arc_frame.hpp"
 #include "circle_crossing.hpp"
+#include "exact_range.hpp"
 #include "validate.hpp"
 
 namespace carom {
 namespace {
 
 using detail::ArcFrame;
+using detail::direction_at;
 using detail::entry_crossing;
 using detail::exit_crossing;
+using detail::offset_motion;
+using detail::ScaledMotion;
 
 // Argument names differ between the time form and the step form; messages use the caller's.
 struct Names {
@@ -50,36 +54,72 @@ void keep_earliest(Candidate& best, double t, Vec2 point, Vec2 normal) {
   if (!best.found || t < best.t) best = {true, t, point, normal};
 }
 
+// p + v·t. Where v·t overflows but the sum is representable, it is taken of halves (exact for
+// such huge values); ±inf only when the true position lies beyond the double range.
+[[gnu::noinline, gnu::cold]] Vec2 advance_halved(Vec2 p, Vec2 v, double t) {
+  return (p * 0.5 + (v * 0.5) * t) * 2.0;
+}
+
+Vec2 advance(Vec2 p, Vec2 v, double t) {
+  const Vec2 at = p + v * t;
+  if (is_finite(at)) [[likely]]
+    return at;
+  return advance_halved(p, v, t);
+}
+
+// The unit vector from one finite point to another, even where their difference overflows.
+Vec2 direction_between(Vec2 from, Vec2 to) {
+  const Vec2 difference = to - from;
+  if (is_finite(difference)) return normalized(difference);
+  return normalized(to * 0.5 - from * 0.5);
+}
+
+// A normal computed from positions, or, where those overflowed, the fallback from the motion.
+Vec2 finite_or(Vec2 normal, Vec2 fallback) {
+  return is_finite(normal) && normal != Vec2{} ? normal : fallback;
+}
+
 // A ball touching or overlapping the shape at its nearest point and moving towards it is in
 // contact now (t = 0). Moving away from that point, it may still meet another part later.
 // `gap` runs from the centre to the nearest point; callers that know its direction exactly (the
 // normal of a segment's interior) pass it computed from that, so that a ball sliding along a
 // wall is not seen approaching it by a rounding of the nearest point.
 void contact_at_start(const Ball& ball, Vec2 velocity, Vec2 nearest, Vec2 gap, Candidate& best) {
-  const double gap_sq = length_squared(gap);
-  if (gap_sq > ball.radius * ball.radius) return;
+  if (!detail::within_distance(gap, ball.radius)) return;
   // A centre exactly on the shape has no side to move away to: any motion deepens the contact.
-  if (gap_sq == 0.0) {
+  if (gap == Vec2{}) {
     if (velocity != Vec2{}) keep_earliest(best, 0.0, nearest, normalized(velocity));
     return;
   }
-  if (dot(velocity, gap) > 0.0) keep_earliest(best, 0.0, nearest, normalized(gap));
+  if (detail::dot_positive(velocity, gap)) keep_earliest(best, 0.0, nearest, normalized(gap));
 }
 
 // The ball's first approaching contact with a fixed point, in [0, horizon].
 void contact_with_point(const Ball& ball, Vec2 velocity, Vec2 point, double horizon,
                         Candidate& best) {
-  const detail::Crossing crossing =
-      entry_crossing(ball.center - point, velocity, ball.radius, horizon);
+  const ScaledMotion motion = offset_motion(ball.center, point, velocity, ball.radius, 0.0);
+  const detail::Crossing crossing = entry_crossing(motion, horizon);
   if (!crossing.found) return;
   const Vec2 center_at = ball.center + velocity * crossing.t;
-  keep_earliest(best, crossing.t, point, normalized(point - center_at));
+  // Where the contact's offset (the radius) is below the rounding of the positions, neither
+  // positions nor the scaled motion resolve it: the ball then meets the point head on.
+  keep_earliest(best, crossing.t, point,
+                finite_or(normalized(point - center_at),
+                          finite_or(-direction_at(motion, crossing.t), normalized(velocity))));
 }
 
 // The ball's first contact with the segment's interior, from the side its centre is on.
+void contact_with_segment_side_rescaled(const Ball& ball, Vec2 velocity, const Segment& segment,
+                                        double horizon, Candidate& best);
+
 void contact_with_segment_side(const Ball& ball, Vec2 velocity, const Segment& segment,
                                double horizon, Candidate& best) {
   const Vec2 along = segment.b - segment.a;
+  if (!(detail::vector_in_range(along) && detail::vector_in_range(ball.center - segment.a) &&
+        detail::vector_in_range(velocity) && detail::square_in_range(ball.radius * ball.radius))) {
+    contact_with_segment_side_rescaled(ball, velocity, segment, horizon, best);
+    return;
+  }
   const double length_sq = length_squared(along);
   const double len = length(along);
   Vec2 outward = left_normal(along) / len;  // unit normal pointing to the ball's side
@@ -94,27 +134,101 @@ void contact_with_segment_side(const Ball& ball, Vec2 velocity, const Segment& s
   if (!(t <= horizon)) return;
   const Vec2 point = ball.center + velocity * t - outward * ball.radius;
   const double along_fraction = dot(point - segment.a, along) / length_sq;
-  if (along_fraction < 0.0 || along_fraction > 1.0) return;
+  if (!(along_fraction >= 0.0 && along_fraction <= 1.0)) return;  // NaN too: no hit
   keep_earliest(best, t, point, -outward);
 }
 
-Vec2 nearest_on_segment(const Segment& segment, Vec2 p) {
+// A segment relative to its start, halved where the differences overflow (exact for such huge
+// values), then scaled by a power of two so that its largest length is near 1.
+struct SegmentFrame {
+  Vec2 along;               // b − a, scaled
+  Vec2 offset;              // p − a, scaled
+  double radius = 0.0;      // scaled like the lengths
+  int length_exponent = 0;  // true length = scaled length·2^length_exponent
+};
+
+SegmentFrame segment_frame(const Segment& segment, Vec2 p, double radius) {
+  SegmentFrame frame{segment.b - segment.a, p - segment.a, radius, 0};
+  if (!is_finite(frame.along) || !is_finite(frame.offset)) {
+    frame = {segment.b * 0.5 - segment.a * 0.5, p * 0.5 - segment.a * 0.5, radius * 0.5, 1};
+  }
+  const int e = std::max({detail::exponent_of(frame.along), detail::exponent_of(frame.offset),
+                          detail::exponent_of(frame.radius)});
+  frame.along = detail::scaled(frame.along, -e);
+  frame.offset = detail::scaled(frame.offset, -e);
+  frame.radius = std::ldexp(frame.radius, -e);
+  frame.length_exponent += e;
+  return frame;
+}
+
+// The segment's interior for any finite input: the formulas of contact_with_segment_side in the
+// scaled frame, t scaled back by the ratio of the length and speed scales.
+void contact_with_segment_side_rescaled(const Ball& ball, Vec2 velocity, const Segment& segment,
+                                        double horizon, Candidate& best) {
+  const SegmentFrame frame = segment_frame(segment, ball.center, ball.radius);
+  const int speed_exponent = detail::exponent_of(velocity);
+  const Vec2 u = detail::scaled(velocity, -speed_exponent);
+  const double len = length(frame.along);
+  if (!(len > 0.0)) return;  // negligible against the distance: its end points decide
+  Vec2 outward = left_normal(frame.along) / len;
+  double distance = cross(frame.along, frame.offset) / len;
+  if (distance < 0.0) {
+    outward = -outward;
+    distance = -distance;
+  }
+  const double normal_speed = dot(u, outward);
+  if (!(distance > frame.radius && normal_speed < 0.0)) return;
+  const double scaled_t = (distance - frame.radius) / -normal_speed;
+  const double t = std::ldexp(scaled_t, frame.length_exponent - speed_exponent);
+  if (!(t <= horizon)) return;
+  const Vec2 touched = frame.offset + u * scaled_t - outward * frame.radius;
+  const double along_fraction = dot(touched, frame.along) / length_squared(frame.along);
+  if (!(along_fraction >= 0.0 && along_fraction <= 1.0)) return;
+  const Vec2 point = segment.a + detail::scaled(touched, frame.length_exponent);
+  keep_earliest(best, t, point, -outward);
+}
+
+// Where the foot of p falls along the segment, as a fraction of a→b (not clamped); 0 for a
+// segment of zero length (or one negligible against the distance to p).
+double segment_fraction(const Segment& segment, Vec2 p) {
   const Vec2 along = segment.b - segment.a;
-  const double length_sq = length_squared(along);
-  if (length_sq == 0.0) return segment.a;
-  const double fraction = std::clamp(dot(p - segment.a, along) / length_sq, 0.0, 1.0);
-  return segment.a + along * fraction;
+  const Vec2 offset = p - segment.a;
+  if (detail::vector_in_range(along) && detail::vector_in_range(offset)) {
+    const double length_sq = length_squared(along);
+    return length_sq > 0.0 ? dot(offset, along) / length_sq : 0.0;
+  }
+  const SegmentFrame frame = segment_frame(segment, p, 0.0);
+  const double length_sq = length_squared(frame.along);
+  if (!(length_sq > 0.0)) return 0.0;
+  const double fraction = dot(frame.offset, frame.along) / length_sq;
+  return std::isfinite(fraction) ? fraction : std::copysign(2.0, fraction);  // far beyond an end
+}
+
+Vec2 point_on_segment(const Segment& segment, double fraction) {
+  const Vec2 along = segment.b - segment.a;
+  if (is_finite(along)) return segment.a + along * fraction;
+  return segment.a * (1.0 - fraction) + segment.b * fraction;
+}
+
+Vec2 nearest_on_segment(const Segment& segment, Vec2 p) {
+  if (segment.a == segment.b) return segment.a;
+  return point_on_segment(segment, std::clamp(segment_fraction(segment, p), 0.0, 1.0));
 }
 
 // From p to the segment's nearest point. For an interior nearest point the direction is the
 // segment's exact normal (a rounding of the nearest point would tilt it).
 Vec2 gap_to_segment(const Segment& segment, Vec2 p, Vec2 nearest) {
-  const Vec2 along = segment.b - segment.a;
-  const double length_sq = length_squared(along);
-  const double fraction = length_sq > 0.0 ? dot(p - segment.a, along) / length_sq : 0.0;
+  const double fraction = segment_fraction(segment, p);
   if (!(fraction > 0.0 && fraction < 1.0)) return nearest - p;
-  const Vec2 normal = left_normal(along) / length(along);
-  return normal * -dot(p - segment.a, normal);
+  const Vec2 along = segment.b - segment.a;
+  const Vec2 offset = p - segment.a;
+  if (is_finite(along) && is_finite(offset)) {
+    const Vec2 normal = left_normal(along) / length(along);
+    return normal * -dot(offset, normal);
+  }
+  const Vec2 half_along = segment.b * 0.5 - segment.a * 0.5;
+  const Vec2 normal = left_normal(half_along) / length(half_along);
+  return (normal * -dot(p * 0.5 - segment.a * 0.5, normal)) * 2.0;
 }
 
 // Contacts with the arc's interior: the centre crosses the circle of radius arc + ball from
@@ -123,34 +237,44 @@ Vec2 gap_to_segment(const Segment& segment, Vec2 p, Vec2 nearest) {
 // the arc's span.
 void contact_with_arc_interior(const Ball& ball, Vec2 velocity, const ArcFrame& arc, double horizon,
                                Candidate& best) {
-  const Vec2 s = ball.center - arc.center;
-  auto consider = [&](detail::Crossing crossing, double side) {
+  // side: +1 where the touched point lies on the ball's side of the arc's centre, −1 where the
+  // ball reaches across it. facing: +1 where the normal (ball to point) points away from the
+  // arc's centre (the ball inside the bowl), −1 where it points towards it.
+  auto consider = [&](const ScaledMotion& motion, detail::Crossing crossing, double side,
+                      double facing) {
     if (!crossing.found) return;
     const Vec2 center_at = ball.center + velocity * crossing.t;
-    const Vec2 direction = normalized(center_at - arc.center) * side;
+    // Arc centre to ball centre; where even the scaled motion cannot resolve it (an arc far
+    // below the rounding of the positions), the ball meets it head on.
+    const Vec2 outwards =
+        finite_or(direction_at(motion, crossing.t), normalized(velocity) * facing);
+    const Vec2 direction = finite_or(normalized(center_at - arc.center), outwards) * side;
     if (!arc.contains(direction)) return;
     const Vec2 point = arc.center + direction * arc.radius;
-    keep_earliest(best, crossing.t, point, normalized(point - center_at));
+    keep_earliest(best, crossing.t, point,
+                  finite_or(normalized(point - center_at), outwards * facing));
   };
-  const double outer = arc.radius + ball.radius;
-  if (length_squared(s) > outer * outer) {
-    consider(entry_crossing(s, velocity, outer, horizon), 1.0);
+  const ScaledMotion outer =
+      offset_motion(ball.center, arc.center, velocity, arc.radius, ball.radius);
+  if (!detail::within_distance(outer.s, outer.radius)) {
+    consider(outer, entry_crossing(outer, horizon), 1.0, -1.0);
   }
-  const double inner = arc.radius - ball.radius;
-  if (inner > 0.0) {
-    consider(exit_crossing(s, velocity, inner, horizon), 1.0);
-  } else if (inner < 0.0) {
-    consider(entry_crossing(s, velocity, -inner, horizon), -1.0);
+  ScaledMotion inner = offset_motion(ball.center, arc.center, velocity, arc.radius, -ball.radius);
+  if (inner.radius > 0.0) {
+    consider(inner, exit_crossing(inner, horizon), 1.0, 1.0);
+  } else if (inner.radius < 0.0) {
+    inner.radius = -inner.radius;
+    consider(inner, entry_crossing(inner, horizon), -1.0, -1.0);
   }
 }
 
 Impact finish_static(const Ball& ball, Vec2 velocity, Vec2 nearest, const Candidate& best) {
   Impact out;
-  out.overlapping = length_squared(nearest - ball.center) < ball.radius * ball.radius;
+  out.overlapping = detail::strictly_within_distance(nearest - ball.center, ball.radius);
   if (best.found) {
     out.hit = true;
     out.t = best.t;
-    out.a_at = ball.center + velocity * best.t;
+    out.a_at = advance(ball.center, velocity, best.t);
     out.b_at = best.point;
     out.point = best.point;
     out.normal = best.normal;
@@ -159,8 +283,17 @@ Impact finish_static(const Ball& ball, Vec2 velocity, Vec2 nearest, const Candid
   out.a_at = ball.center;
   out.b_at = nearest;
   out.point = nearest;
-  out.normal = normalized(nearest - ball.center);
+  out.normal = direction_between(ball.center, nearest);
   return out;
+}
+
+// Positions, their difference or the sum of radii overflowed: the direction comes from the
+// scaled motion instead; a contact point beyond the double range stays infinite.
+[[gnu::noinline, gnu::cold]] void normal_from_motion(const ScaledMotion& motion, double radius_a,
+                                                     Impact& out) {
+  const Vec2 towards_b = -direction_at(motion, out.t);
+  out.normal = towards_b == Vec2{} ? normalized(motion.u) : towards_b;
+  out.point = out.a_at + out.normal * radius_a;
 }
 
 Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball& b, Vec2 velocity_b,
@@ -171,23 +304,38 @@ Impact ball_ball(const Names& names, const Ball& a, Vec2 velocity_a, const Ball&
   detail::require_finite(names.function, names.velocity_b, velocity_b);
 
   // Relative motion (the tutorial's v3): A moves by velocity_a − velocity_b, B stands still.
-  const Vec2 s = a.center - b.center;
-  const Vec2 u = velocity_a - velocity_b;
-  const double reach = a.radius + b.radius;
-  // Coincident centres have no line of centres and no side to separate to: any relative
-  // motion deepens the overlap, so it counts as approaching.
-  const detail::Crossing crossing =
-      s == Vec2{} ? detail::Crossing{u != Vec2{}, 0.0} : entry_crossing(s, u, reach, horizon);
+  // Coincident centres count as approaching (see ball_pair_crossing).
+  // In the exact range (nearly always) the plain formulas, with one range test for all; the test
+  // fails for an overflowed (infinite) difference too, and then the motion is taken of halves.
+  const ScaledMotion direct{a.center - b.center, velocity_a - velocity_b, a.radius + b.radius, 0,
+                            0};
+  const bool plain = detail::in_exact_range(direct.s, direct.u, direct.radius);
+  const ScaledMotion motion = plain ? direct
+                                    : detail::ball_pair_motion(a.center, velocity_a, a.radius,
+                                                               b.center, velocity_b, b.radius);
+  detail::Crossing crossing;
+  if (!plain) {
+    crossing = detail::ball_pair_crossing(motion, horizon);
+  } else if (motion.s == Vec2{}) {
+    crossing = {motion.u != Vec2{}, 0.0};
+  } else {
+    crossing = detail::entry_crossing_in_range(motion.s, motion.u, motion.radius, horizon);
+  }
 
   Impact out;
-  out.overlapping = length_squared(s) < reach * reach;
+  out.overlapping = plain ? length_squared(motion.s) < motion.radius * motion.radius
+                          : detail::strictly_within_distance(motion.s, motion.radius);
   out.hit = crossing.found;
   out.t = crossing.found ? crossing.t : 0.0;
-  out.a_at = a.center + velocity_a * out.t;
-  out.b_at = b.center + velocity_b * out.t;
+  out.a_at = advance(a.center, velocity_a, out.t);
+  out.b_at = advance(b.center, velocity_b, out.t);
   const Vec2 between = out.b_at - out.a_at;
-  out.normal = between == Vec2{} ? normalized(u) : normalized(between);
+  const double reach = a.radius + b.radius;
+  out.normal = between == Vec2{} ? normalized(motion.u) : normalized(between);
   out.point = out.a_at + between * (a.radius / reach);
+  if (!is_finite(out.normal) || !is_finite(out.point) || !std::isfinite(reach)) [[unlikely]] {
+    normal_from_motion(motion, a.radius, out);
+  }
   return out;
 }
 
@@ -195,6 +343,8 @@ Impact ball_point(const Names& names, const Ball& a, Vec2 velocity_a, Vec2 point
   validate_moving_ball(names, a, velocity_a, horizon);
   detail::require_finite(names.function, "point", point);
   Candidate best;
+  // As for every static shape: a centre exactly on the point and moving is in contact now.
+  contact_at_start(a, velocity_a, point, point - a.center, best);
   contact_with_point(a, velocity_a, point, horizon, best);
   return finish_static(a, velocity_a, point, best);
 }

@@ -11,14 +11,18 @@
 #include <limits>
 #include <string>
 
+#include "circle_crossing.hpp"
+#include "exact_range.hpp"
 #include "validate.hpp"
 
 // A portable build still runs the widest vectors the machine has: the compiler emits the loop
 // once per instruction set listed and the loader picks the best the CPU supports (an ELF ifunc).
 // The answers do not depend on the pick: with FMA contraction off (cmake/CaromOptions.cmake)
 // each lane does the same correctly rounded operations at every width. A -march=native build
-// needs no clones.
-#if defined(__x86_64__) && defined(__ELF__) && !defined(__AVX2__) && !defined(CAROM_NO_CLONES)
+// needs no clones. Nor does a ThreadSanitizer build: the sanitizer instruments the ifunc's
+// resolver, which the loader runs before the sanitizer's runtime is up, and it crashes.
+#if defined(__x86_64__) && defined(__ELF__) && !defined(__AVX2__) && !defined(CAROM_NO_CLONES) && \
+    !defined(__SANITIZE_THREAD__)
 #define CAROM_VECTOR_CLONES __attribute__((target_clones("default", "avx2", "avx512f")))
 #else
 #define CAROM_VECTOR_CLONES
@@ -46,10 +50,10 @@ struct NamedArray {
   bool radius;  // must be > 0, not only finite
 };
 
-// Throws for the first bad value (pairs in order, then arrays in order). Called only when the
-// fast check in the loop saw a possible one; returns if there is none after all (the fast check
-// also fires for finite values so large that the discriminant overflows, near 1e308).
-void throw_first_bad_value(const BallPairArrays& p) {
+// Throws for the first bad value among pairs [begin, end) (pairs in order, then arrays in
+// order). Called only when the fast check in the loop saw a possible one; returns if there is
+// none after all (the check also fires for finite values outside the exact range).
+void throw_first_bad_value(const BallPairArrays& p, std::size_t begin, std::size_t end) {
   const NamedArray arrays[] = {
       {"pairs.a_x", p.a_x, false},           {"pairs.a_y", p.a_y, false},
       {"pairs.a_radius", p.a_radius, true},  {"pairs.a_move_x", p.a_move_x, false},
@@ -57,7 +61,7 @@ void throw_first_bad_value(const BallPairArrays& p) {
       {"pairs.b_y", p.b_y, false},           {"pairs.b_radius", p.b_radius, true},
       {"pairs.b_move_x", p.b_move_x, false}, {"pairs.b_move_y", p.b_move_y, false},
   };
-  for (std::size_t i = 0; i < p.a_x.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     for (const NamedArray& array : arrays) {
       const double value = array.values[i];
       const bool bad =
@@ -117,6 +121,19 @@ void check_sizes(const BallPairArrays& p, std::span<double> t) {
   return bits(radius) | (bits(radius) - 1u);
 }
 
+// The sign bit is set when a square (>= +0, or NaN) lies outside detail::square_in_range's
+// bounds: below the low bound the first difference wraps negative, above the high one (inf and
+// NaN included) the second does.
+[[nodiscard]] std::uint64_t out_of_range_flag(double square) {
+  return (bits(square) - bits(detail::kSquareLow)) | (bits(detail::kSquareHigh) - bits(square));
+}
+
+// The sign bit is set when the vector (x, y) is not exactly zero (either sign of zero).
+[[nodiscard]] std::uint64_t nonzero_flag(double x, double y) {
+  const std::uint64_t magnitude_bits = (bits(x) | bits(y)) << 1;
+  return magnitude_bits | (0u - magnitude_bits);
+}
+
 struct PairColumns {
   const double* a_x;
   const double* a_y;
@@ -130,9 +147,9 @@ struct PairColumns {
   const double* b_my;
 };
 
-// Writes t for pairs [begin, end) and returns the OR of their bad-value flags: the sign bit is
-// set if any input is NaN, infinite, or a radius <= 0 (and for finite inputs so large that the
-// discriminant overflows).
+// Writes t for pairs [begin, end) and returns the OR of their flags: the sign bit is set if any
+// input is NaN, infinite, or a radius <= 0, or if a pair lies outside the range where the plain
+// formulas are exact (detail::in_exact_range); such a block is redone pair by pair.
 //
 // The loop body has no branch, so that it vectorises: every lane computes the square root and
 // the quotient, and selects discard the lanes where they mean nothing. gcc's default
@@ -163,9 +180,12 @@ CAROM_VECTOR_CLONES std::uint64_t sweep_range(const PairColumns& in, double* out
     const double reach = ar + br;
     // detail::entry_crossing's arithmetic, operation for operation, so t is bit-identical.
     const double b = sx * ux + sy * uy;
-    const double c = (sx * sx + sy * sy) - reach * reach;
+    const double s_squared = sx * sx + sy * sy;
+    const double u_squared = ux * ux + uy * uy;
+    const double reach_squared = reach * reach;
+    const double c = s_squared - reach_squared;
     const double h = sx * uy - sy * ux;
-    const double discriminant = (ux * ux + uy * uy) * (reach * reach) - h * h;
+    const double discriminant = u_squared * reach_squared - h * h;
     const double entry = c / (std::sqrt(discriminant) - b);  // NaN where discriminant < 0
 
     const bool approaching = std::isless(b, 0.0);
@@ -186,6 +206,9 @@ CAROM_VECTOR_CLONES std::uint64_t sweep_range(const PairColumns& in, double* out
     // infinity or NaN in any input makes it infinite or NaN; an infinite s, u or reach makes
     // a·reach² or h² infinite, or a product of infinity and zero NaN.
     bad |= not_finite_flag(discriminant) | not_positive_flag(ar) | not_positive_flag(br);
+    // detail::in_exact_range(s, u, reach), as bits.
+    bad |= (out_of_range_flag(s_squared) & nonzero_flag(sx, sy)) |
+           (out_of_range_flag(u_squared) & nonzero_flag(ux, uy)) | out_of_range_flag(reach_squared);
   }
   return bad;
 }
@@ -197,24 +220,62 @@ std::size_t count_hits(const double* t, std::size_t begin, std::size_t end) {
   return hits;
 }
 
+// Pair i by the scalar code (detail::ball_pair_crossing, which sweep_ball_ball uses), after
+// validating it: outside the exact range it rescales, inside it is the same arithmetic as the
+// loop above.
+double sweep_one(const BallPairArrays& p, std::size_t i) {
+  throw_first_bad_value(p, i, i + 1);
+  const detail::Crossing crossing = detail::ball_pair_crossing(
+      {p.a_x[i], p.a_y[i]}, {p.a_move_x[i], p.a_move_y[i]}, p.a_radius[i], {p.b_x[i], p.b_y[i]},
+      {p.b_move_x[i], p.b_move_y[i]}, p.b_radius[i], kStepEnd);
+  double t = kNoHit;
+  if (crossing.found) t = crossing.t;
+  return t;
+}
+
+// Whether t shares memory with an input array: then a block's inputs are gone once its t is
+// written, and flagged pairs cannot be redone afterwards.
+bool aliases_an_input(const BallPairArrays& p, std::span<double> t) {
+  const std::span<const double> inputs[] = {p.a_x, p.a_y, p.a_radius, p.a_move_x, p.a_move_y,
+                                            p.b_x, p.b_y, p.b_radius, p.b_move_x, p.b_move_y};
+  const auto t_begin = reinterpret_cast<std::uintptr_t>(t.data());
+  const auto t_end = reinterpret_cast<std::uintptr_t>(t.data() + t.size());
+  for (const auto& input : inputs) {
+    const auto begin = reinterpret_cast<std::uintptr_t>(input.data());
+    const auto end = reinterpret_cast<std::uintptr_t>(input.data() + input.size());
+    if (begin < t_end && t_begin < end) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::size_t sweep_ball_ball_batch(const BallPairArrays& pairs, std::span<double> t) {
   check_sizes(pairs, t);
+  if (aliases_an_input(pairs, t)) {
+    // Pair by pair, each pair's inputs read before its t is written.
+    std::size_t hits = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      t[i] = sweep_one(pairs, i);
+      hits += t[i] != kNoHit ? 1u : 0u;
+    }
+    return hits;
+  }
   const PairColumns columns{
       pairs.a_x.data(),      pairs.a_y.data(),      pairs.a_radius.data(), pairs.a_move_x.data(),
       pairs.a_move_y.data(), pairs.b_x.data(),      pairs.b_y.data(),      pairs.b_radius.data(),
       pairs.b_move_x.data(), pairs.b_move_y.data(),
   };
   const std::size_t n = t.size();
-  std::uint64_t bad = 0;
   std::size_t hits = 0;
   for (std::size_t begin = 0; begin < n; begin += kBlockPairs) {
     const std::size_t end = std::min(n, begin + kBlockPairs);
-    bad |= sweep_range(columns, t.data(), begin, end);
+    const std::uint64_t flags = sweep_range(columns, t.data(), begin, end);
+    if (flags >> kSignShift != 0) {
+      for (std::size_t i = begin; i < end; ++i) t[i] = sweep_one(pairs, i);
+    }
     hits += count_hits(t.data(), begin, end);
   }
-  if (bad >> kSignShift != 0) throw_first_bad_value(pairs);
   return hits;
 }
 

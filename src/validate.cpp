@@ -83,6 +83,11 @@ void require_mass(const char* function, const char* argument, double value) {
   }
 }
 
+void require_that(bool condition, const char* function, const char* argument, double value,
+                  const char* requirement) {
+  if (!condition) fail(function, argument, to_text(value), requirement);
+}
+
 void require_nonzero(const char* function, const char* argument, Vec2 value) {
   require_finite(function, argument, value);
   if (value.x == 0.0 && value.y == 0.0) {

@@ -22,6 +22,9 @@ void require_in_range(const char* function, const char* argument, double value, 
 void require_restitution(const char* function, const char* argument, double value);
 // A mass is finite and > 0, or carom::kImmovable (+infinity).
 void require_mass(const char* function, const char* argument, double value);
+// A requirement that the caller tests itself; throws with that requirement when condition is false.
+void require_that(bool condition, const char* function, const char* argument, double value,
+                  const char* requirement);
 void require_nonzero(const char* function, const char* argument, Vec2 value);
 
 }  // namespace carom::detail

@@ -22,7 +22,8 @@ struct Segment {
 // A static circular arc: the points center + radius·(cos θ, sin θ) for θ running
 // counter-clockwise from start_angle to end_angle (radians). The span end_angle − start_angle
 // must lie in [0, 2π]: a span of 0 is a single point, 2π the full circle. Balls touch it from
-// outside, from inside and at its two end points.
+// outside, from inside and at its two end points. The whole circle must lie within the double
+// range (max(|center.x|, |center.y|) + radius finite), so that every touched point is finite.
 struct Arc {
   Vec2 center;
   double radius = 1.0;

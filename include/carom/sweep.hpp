@@ -18,8 +18,28 @@
 // - Starting overlapped is reported, never hidden: overlapping is set, t = 0, a_at/b_at are the
 //   start positions and normal points from A to B's nearest part; hit is set only when they
 //   approach (a caller resolving contacts must then respond at once).
-// - All arguments are validated: NaN or infinite values, radius <= 0, a negative horizon or an
-//   arc span outside [0, 2π] throw carom::InvalidArgument naming the argument and its value.
+// - All arguments are validated: NaN or infinite values, radius <= 0, a negative horizon, an
+//   arc span outside [0, 2π] or an arc whose circle reaches beyond the double range
+//   (max(|center.x|, |center.y|) + radius overflows) throw carom::InvalidArgument naming the
+//   argument and its value.
+//
+// Numeric range: every other input is answered, whatever its magnitude — from the subnormals
+// (5e-324) to ±1.8e308, lengths and speeds at unrelated scales. The answer is either a hit with
+// t in [0, horizon] and a unit normal, or no hit (t = 0); no field is ever NaN. Inside a window
+// of ordinary magnitudes (squared lengths and speeds within 2^±500, about 1e±150) the closed form
+// is used as it stands; outside it the problem is scaled by powers of two, which changes no
+// rounding, so the answer is the one for the same problem scaled to ordinary magnitudes (t
+// the same; positions scaled): bit for bit for two balls and a point, to the last bit of a
+// hypot for segments and arcs. Degenerate limits, all at the rounding level: terms
+// below 2^-1000 of the largest are lost; a radius more than 2^1000 below the distance decides
+// contact by the path's distance to the centre; a position whose true value lies beyond
+// ±1.8e308 is reported as ±infinity. Derivation and tests: docs/derivation.md §5,
+// docs/guarantees.md.
+//
+// Edge inputs, each exact: a point is a ball of radius zero, a segment whose ends coincide is
+// exactly that point, an arc of zero span is its one point; touching at the start counts as in
+// the rules above (approaching: hit at t = 0, not overlapping; leaving or sliding: no hit); a
+// centre exactly on a point, segment or arc counts as approaching whenever it moves.
 #pragma once
 
 #include "carom/shapes.hpp"

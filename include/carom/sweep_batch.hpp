@@ -22,6 +22,9 @@ struct BallPairArrays {
 // approaching, exactly as sweep_ball_ball's t (bit-identical), or kNoHit. t.size() must equal
 // the pairs' count. Returns the number of hits. Bad input (NaN or infinite values, a radius
 // <= 0, spans of different lengths) throws carom::InvalidArgument naming the array and index.
+// Any finite input is answered as sweep_ball_ball answers it (see its numeric range): a block
+// of pairs holding one outside the ordinary window is redone pair by pair with the scalar code.
+// t may be one of the input arrays (then every pair goes through the scalar code).
 std::size_t sweep_ball_ball_batch(const BallPairArrays& pairs, std::span<double> t);
 
 }  // namespace carom

@@ -53,9 +53,16 @@ struct Vec2 {
 [[nodiscard]] inline double distance(Vec2 a, Vec2 b) noexcept { return length(b - a); }
 
 // Unit vector in the direction of a; the zero vector stays zero (there is no direction to keep).
+// A vector so short that its length would be subnormal, or so long that it would overflow, is
+// first scaled by a power of two (exact), so that the quotient stays a unit vector.
 [[nodiscard]] inline Vec2 normalized(Vec2 a) noexcept {
   const double len = length(a);
-  return len > 0.0 ? a / len : Vec2{};
+  if (!(len > 0.0)) return {};
+  if (len < 0x1p-900 || len > 0x1p+900) [[unlikely]] {
+    const Vec2 rescaled = a * (len < 1.0 ? 0x1p+600 : 0x1p-600);
+    return rescaled / length(rescaled);
+  }
+  return a / len;
 }
 
 // a turned a quarter turn counter-clockwise (to its left) and clockwise (to its right).

@@ -61,10 +61,13 @@ void DiskMotion::on_contact(const ContactEvent& contact) {
   velocity_[b] += contact.normal * (contact.impulse * inverse_mass_[b]);
 }
 
+void DiskMotion::advance(double now) {
+  for (std::size_t disk = 0; disk < ids_.size(); ++disk) close(disk, now);
+}
+
 void DiskMotion::synchronise(const World& world) {
-  const double now = world.time();
+  advance(world.time());
   for (std::size_t disk = 0; disk < ids_.size(); ++disk) {
-    close(disk, now);
     velocity_[disk] = world.velocity(ids_[disk]);
     const Vec2 unwrapped = start_[disk] + displacement_[disk];
     const Vec2 off = unwrapped - world.position(ids_[disk]);

@@ -56,7 +56,7 @@ TEST(GasErrors, NameTheOptionAndExitWithTwo) {
       {{"gas", "--n", "1"}, "--n \"1\": at least 2 disks"},
       {{"gas", "--eta", "0.95"}, "--eta \"0.95\""},
       {{"gas", "--n", "10", "--eta", "0.8"}, "this gas can start at packing fraction"},
-      {{"gas", "--n", "4", "--eta", "0.3"}, "periodic box is only"},
+      {{"gas", "--n", "2", "--eta", "0.3"}, "periodic box is only"},
       {{"gas", "--mix", "1.4"}, "the colon between D and F is missing"},
       {{"gas", "--mix", "1.4:1.5"}, "the fraction must lie in (0, 1)"},
       {{"gas", "--collisions", "0"}, "--collisions \"0\""},

@@ -39,8 +39,10 @@ struct PeriodicCell {
 
 struct GasMonitorSettings {
   std::size_t blocks = 16;  // at least 2
-  // Each block is advanced in this many equal runs of World::run_until (at least 2). Between runs
-  // every disk is synchronised with the world and the mean-square displacement is sampled.
+  // Each block is advanced in this many equal runs of World::run_until (at least 2). After each
+  // run every disk's interval is closed and the mean-square displacement sampled; after a
+  // block's last run the disks' velocities are also taken from the world and their unwrapped
+  // positions checked against it.
   std::size_t runs_per_block = 8;
   // Time between two samples of the structure (g(r) and ψ₆), rounded to whole runs (at least
   // one run); 0 samples after every run. A sample costs about as much as a few dozen collisions

@@ -132,6 +132,7 @@ std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOut
 int run(const EosOptions& options) {
   const std::vector<double> etas = parse_etas(options.etas);
   std::vector<GasSpec> specs;
+  specs.reserve(etas.size());
   for (const double eta : etas) specs.push_back(parse_gas_spec(options.gas, eta, options.etas));
   const std::uint64_t threads = parse_whole("--threads", options.threads, "a whole number >= 1");
   if (threads < 1 || threads > kMostThreads) {

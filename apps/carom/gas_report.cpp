@@ -58,9 +58,10 @@ std::string hue_of(double angle, double modulus) {
 
 std::string psi6_map(const GasSpec& spec, const GasResults& results) {
   SvgFigure figure;
-  figure.heading("Local bond order ψ6 of the last sample: hue = orientation, grey = disorder");
+  figure.heading("Local bond order ψ6 (hue: orientation, grey: disorder)");
   figure.heading("N = " + std::to_string(spec.n) + ", η = " + readable(spec.eta) +
-                 ", global |ψ6| = " + readable(results.psi6.mean));
+                 ", last sample; global |ψ6| = " + readable(results.psi6.mean) +
+                 " averaged over the run");
   const Pen frame{"black", 1.0, false};
   const double side = spec.layout.side;
   figure.line({0.0, 0.0}, {side, 0.0}, frame);

@@ -81,13 +81,19 @@ std::string render_plot(const PlotSpec& spec) {
   figure.line({0.0, 0.0}, {0.0, kHeight}, axis);
   figure.line({kWidth, 0.0}, {kWidth, kHeight}, grid);
   figure.line({0.0, kHeight}, {kWidth, kHeight}, grid);
-  for (double x = x_range.low; x <= x_range.high + 0.5 * x_step; x += x_step) {
+  // Ticks by index, not by adding steps, so rounding neither accumulates nor drops the last.
+  const auto ticks = [](const Range& range, double step) {
+    return static_cast<int>(std::lround((range.high - range.low) / step));
+  };
+  for (int tick = 0; tick <= ticks(x_range, x_step); ++tick) {
+    const double x = x_range.low + tick * x_step;
     const Vec2 at = to_plot(x, y_range.low);
     figure.line(at, at + Vec2{0.0, -kTick}, axis);
     figure.label(at + Vec2{0.0, -kTick}, {0.0, -1.0},
                  readable(std::abs(x) < 1e-12 * x_step ? 0.0 : x), "black");
   }
-  for (double y = y_range.low; y <= y_range.high + 0.5 * y_step; y += y_step) {
+  for (int tick = 0; tick <= ticks(y_range, y_step); ++tick) {
+    const double y = y_range.low + tick * y_step;
     const Vec2 at = to_plot(x_range.low, y);
     figure.line(at, at + Vec2{-kTick, 0.0}, axis);
     figure.label(at + Vec2{-kTick, 0.0}, {-1.0, 0.0},

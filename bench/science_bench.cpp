@@ -31,7 +31,8 @@ struct Gas {
 
 Gas make_gas(std::uint64_t n, double eta) {
   const cli::HardDiskLayout layout = cli::hard_disk_layout(n, eta);
-  Gas gas{cli::make_hard_disk_world(layout, kSeed), {{0.0, 0.0}, {layout.side, layout.side}}};
+  Gas gas{
+      cli::make_hard_disk_world(layout, kSeed), {{0.0, 0.0}, {layout.side, layout.side}}, 0.0, {}};
   const double rate = science::equilibrate(gas.world, kEquilibrationPerDisk * n);
   gas.iteration_time = 2.0 * kCollisionsPerDiskPerIteration / rate;
   gas.settings = cli::gas_monitor_settings(kBlocks, kCollisionsPerDiskPerIteration, rate);

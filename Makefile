@@ -153,3 +153,11 @@ bench-web: wasm $(WEB_NODE_MODULES)
 
 clean:
 	rm -rf build
+
+# The long validation of the hard-disk measurements (issue 5): runs `carom eos` and `carom gas`
+# for a few minutes and writes docs/validation.md with tables and plots (docs/figures/validation).
+.PHONY: validate
+validate: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_cli
+	tests/science/validate.sh $(CAROM)

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <vector>
 
 namespace carom::cli {
 namespace {
@@ -93,6 +94,30 @@ World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed) {
     ball.position = site_position(layout, site_of(i, layout.n, sites));
     ball.velocity = Vec2{vx, vy} - mean;
     ball.radius = kDiskRadius;
+    ball.mass = kDiskMass;
+    world.add_ball(ball);
+  }
+  return world;
+}
+
+World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed,
+                           std::span<const double> diameters) {
+  // The one-size world, then each disk resized in place: the sites and velocities are exactly
+  // those of the one-size scene, so the two differ only in the sizes.
+  World sized = make_hard_disk_world(layout, seed);
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {layout.side, layout.side};
+  World world(def);
+  const std::vector<BallId> ids = sized.balls();
+  // kT = K/N = 1 exactly (for mass 1): the drawn velocities' K/N is 1 only on average.
+  const double scale = std::sqrt(static_cast<double>(ids.size()) / sized.kinetic_energy());
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    BallDef ball;
+    ball.position = sized.position(ids[i]);
+    ball.velocity = sized.velocity(ids[i]) * scale;
+    ball.radius = diameters[i] / 2.0;
     ball.mass = kDiskMass;
     world.add_ball(ball);
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "carom/world.hpp"
 
@@ -57,5 +58,13 @@ struct HardDiskLayout {
 // sequence: nothing but the world is allocated, so a caller can measure the world's memory
 // around this call.
 [[nodiscard]] World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed);
+
+// The same world with disk i of diameter diameters[i] (one per disk, each > 0), on the same sites
+// and with the same velocities scaled by one factor so that K/N = 1 exactly (kT = 1; mass 1
+// whatever the size). The caller checks that the largest
+// diameter is at most layout.nearest (less the lattice slack); a layout from
+// hard_disk_layout(n, eta_of_unit_disks) with eta_of_unit_disks = η·n/Σd² has the box of η.
+[[nodiscard]] World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed,
+                                         std::span<const double> diameters);
 
 }  // namespace carom::cli

@@ -10,7 +10,9 @@
 #include "bench_command.hpp"
 #include "carom/error.hpp"
 #include "command.hpp"
+#include "eos_command.hpp"
 #include "exit_codes.hpp"
+#include "gas_command.hpp"
 #include "sweep_command.hpp"
 #include "usage_error.hpp"
 
@@ -60,8 +62,9 @@ int run_tool(int argc, char** argv) {
   app.set_version_flag("--version", std::string("carom ") + CAROM_VERSION);
   app.require_subcommand(1);
   app.footer("Run 'carom VERB --help' for the options of a verb.");
-  const std::vector<carom::cli::Command> commands{carom::cli::add_sweep_command(app),
-                                                  carom::cli::add_bench_command(app)};
+  const std::vector<carom::cli::Command> commands{
+      carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
+      carom::cli::add_gas_command(app), carom::cli::add_eos_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,45 @@
+// carom tool: the options `carom gas` and `carom eos` share — the gas (N, packing fraction, an
+// optional second size), the run's length and the seed — parsed and checked into a GasSpec.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hard_disk_setup.hpp"
+
+namespace carom::cli {
+
+// The options as typed.
+struct GasOptionText {
+  std::string n = "400";
+  std::string eta = "0.3";
+  std::string mix;  // "D:F": a second species of diameter D making up a fraction F of the disks
+  std::string equilibrate = "50";
+  std::string collisions = "500";
+  std::string seed = "1";
+  std::string blocks = "16";
+};
+
+// A gas ready to build and run.
+struct GasSpec {
+  std::uint64_t n = 0;
+  double eta = 0.0;
+  std::vector<double> diameters;  // one per disk; all 1 without --mix
+  HardDiskLayout layout;          // the box of eta for these diameters
+  std::uint64_t equilibration_collisions = 0;
+  double collisions_per_disk = 0.0;
+  std::uint64_t seed = 0;
+  std::uint64_t blocks = 0;
+};
+
+// Parses a whole non-negative integer; throws UsageError naming the option.
+[[nodiscard]] std::uint64_t parse_whole(const std::string& option, const std::string& text,
+                                        const std::string& expected);
+// Parses and checks every option, eta included; throws UsageError for the first bad one.
+[[nodiscard]] GasSpec parse_gas_spec(const GasOptionText& text);
+// The same with a packing fraction given as a number (for each point of `carom eos`).
+[[nodiscard]] GasSpec parse_gas_spec(const GasOptionText& text, double eta,
+                                     const std::string& eta_text);
+
+}  // namespace carom::cli

@@ -1,5 +1,6 @@
 // carom_peers: carom beside Box2D 2.4 and Chipmunk 7 on the same scenes (issue 7).
 //   carom_peers run --engine E [--scene gas|bullets] [--n N] [--packing P] [--steps S] [--seed K]
+//       [--no-checks]
 //       one engine on one scene in this process; prints one line of key=value results
 //   carom_peers report [--out FILE] [--quick | --smoke] [--engines a,b] [--command TEXT]
 //       every case, each in a process of its own; writes the Markdown report
@@ -22,7 +23,7 @@ constexpr int kExitUsage = 2;
 
 constexpr const char* kUsage =
     "usage: carom_peers run --engine E [--scene gas|bullets] [--n N] [--packing P] [--steps S] "
-    "[--seed K]\n"
+    "[--seed K] [--no-checks]\n"
     "       carom_peers report [--out FILE] [--quick | --smoke] [--engines a,b] [--command TEXT]\n"
     "       carom_peers engines\n";
 
@@ -68,6 +69,8 @@ int run(const std::vector<std::string>& args) {
       spec.packing = number_of<double>(args, i, 1e-6, 0.7);
     } else if (args[i] == "--steps") {
       spec.steps = number_of<std::uint32_t>(args, i, 1, 1'000'000);
+    } else if (args[i] == "--no-checks") {
+      spec.checks = false;
     } else if (args[i] == "--seed") {
       spec.seed = number_of<std::uint64_t>(args, i, 0, std::uint64_t{1} << 53U);
     } else {

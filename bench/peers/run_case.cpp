@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -17,6 +18,13 @@ namespace carom::peers {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// This thread's CPU time, seconds.
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
 
 // The process's peak resident memory so far (VmHWM), KiB; 0 where /proc is not there.
 std::int64_t peak_resident_kib() {
@@ -63,7 +71,9 @@ CaseResult run_case(const CaseSpec& spec) {
     velocities[i] = scene.balls[i].velocity;
   }
   std::vector<double> step_seconds;
+  std::vector<double> step_cpu_seconds;
   step_seconds.reserve(spec.steps);
+  step_cpu_seconds.reserve(spec.steps);
   Detectors detectors;
   // Run the checks once on the scene, so that their buffers count in the harness's share of the
   // memory rather than in the engine's.
@@ -82,9 +92,12 @@ CaseResult run_case(const CaseSpec& spec) {
 
   const double dt = 1.0 / kStepsPerSecond;
   for (std::uint32_t step = 0; step < spec.steps; ++step) {
+    const double cpu_start = thread_cpu_seconds();
     const Clock::time_point start = Clock::now();
     engine->step(dt);
     step_seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    step_cpu_seconds.push_back(thread_cpu_seconds() - cpu_start);
+    if (!spec.checks) continue;
 
     engine->read(after, velocities);
     breaks.clear();
@@ -105,6 +118,7 @@ CaseResult run_case(const CaseSpec& spec) {
   }
 
   result.peak_kib = peak_resident_kib();
+  if (!spec.checks) engine->read(before, velocities);
   result.energy_drift = (kinetic_energy(velocities, masses) - energy_start) / energy_start;
   result.bullets_through =
       static_cast<std::uint32_t>(std::count(bullet_through.begin(), bullet_through.end(), 1));
@@ -125,6 +139,7 @@ CaseResult run_case(const CaseSpec& spec) {
   result.mean_step_ms =
       step_seconds.empty() ? 0.0 : total / static_cast<double>(step_seconds.size()) * 1e3;
   result.median_step_ms = median(step_seconds) * 1e3;
+  result.median_step_cpu_ms = median(step_cpu_seconds) * 1e3;
   return result;
 }
 
@@ -133,9 +148,10 @@ std::string to_line(const CaseResult& r) {
   line.precision(17);
   line << "engine=" << r.spec.engine << " scene=" << r.spec.scene << " n=" << r.spec.n
        << " packing=" << r.spec.packing << " steps=" << r.spec.steps << " seed=" << r.spec.seed
-       << " balls=" << r.balls << " setup_s=" << r.setup_seconds
-       << " median_ms=" << r.median_step_ms << " worst_ms=" << r.worst_step_ms
-       << " mean_ms=" << r.mean_step_ms << " peak_kib=" << r.peak_kib
+       << " checks=" << (r.spec.checks ? 1 : 0) << " balls=" << r.balls
+       << " setup_s=" << r.setup_seconds << " median_ms=" << r.median_step_ms
+       << " worst_ms=" << r.worst_step_ms << " mean_ms=" << r.mean_step_ms
+       << " median_cpu_ms=" << r.median_step_cpu_ms << " peak_kib=" << r.peak_kib
        << " harness_kib=" << r.harness_kib << " energy_drift=" << r.energy_drift
        << " overlap=" << r.largest_overlap << " pass_throughs=" << r.pass_throughs
        << " bullets_through=" << r.bullets_through << " left_box=" << r.left_box
@@ -160,11 +176,13 @@ std::optional<CaseResult> parse_line(std::string_view line) {
     r.spec.packing = std::stod(fields.at("packing"));
     r.spec.steps = static_cast<std::uint32_t>(std::stoul(fields.at("steps")));
     r.spec.seed = std::stoull(fields.at("seed"));
+    r.spec.checks = fields.at("checks") == "1";
     r.balls = static_cast<std::uint32_t>(std::stoul(fields.at("balls")));
     r.setup_seconds = std::stod(fields.at("setup_s"));
     r.median_step_ms = std::stod(fields.at("median_ms"));
     r.worst_step_ms = std::stod(fields.at("worst_ms"));
     r.mean_step_ms = std::stod(fields.at("mean_ms"));
+    r.median_step_cpu_ms = std::stod(fields.at("median_cpu_ms"));
     r.peak_kib = std::stoll(fields.at("peak_kib"));
     r.harness_kib = std::stoll(fields.at("harness_kib"));
     r.energy_drift = std::stod(fields.at("energy_drift"));

@@ -21,6 +21,9 @@ struct CaseSpec {
   double packing = 0.2;       // the gas's packing fraction
   std::uint32_t steps = kDefaultSteps;
   std::uint64_t seed = kDefaultSeed;
+  // Run the checks after every step (untimed). Off: only the clock runs between steps, which
+  // shows how much the checks' sweeps through memory slow the next step (caches evicted).
+  bool checks = true;
 };
 
 struct CaseResult {
@@ -30,6 +33,9 @@ struct CaseResult {
   double median_step_ms = 0.0;
   double worst_step_ms = 0.0;
   double mean_step_ms = 0.0;
+  // The same steps on this thread's CPU clock: time the thread was not running (the machine busy
+  // with other work) does not count. On a quiet machine it matches the wall clock.
+  double median_step_cpu_ms = 0.0;
   // Resident memory, KiB (Linux's VmHWM): the process's peak at the end, and its peak before the
   // engine was built (the scene, the harness's buffers and its checks already run once).
   std::int64_t peak_kib = 0;

@@ -75,7 +75,7 @@ class Box2DEngine final : public Engine {
   void add_walls(const Scene& scene) {
     b2BodyDef ground_def;  // static
     b2Body* ground = world_.CreateBody(&ground_def);
-    const Vec2 centre = (scene.lower + scene.upper) / 2.0;
+    const Vec2 middle = (scene.lower + scene.upper) / 2.0;
     const Vec2 half = (scene.upper - scene.lower) / 2.0;
     const double w = kWallThickness;
     struct Slab {
@@ -83,10 +83,10 @@ class Box2DEngine final : public Engine {
       Vec2 centre;
     };
     const Slab slabs[] = {
-        {{half.x + w, w / 2.0}, {centre.x, scene.lower.y - w / 2.0}},  // bottom
-        {{half.x + w, w / 2.0}, {centre.x, scene.upper.y + w / 2.0}},  // top
-        {{w / 2.0, half.y}, {scene.lower.x - w / 2.0, centre.y}},      // left
-        {{w / 2.0, half.y}, {scene.upper.x + w / 2.0, centre.y}},      // right
+        {{half.x + w, w / 2.0}, {middle.x, scene.lower.y - w / 2.0}},  // bottom
+        {{half.x + w, w / 2.0}, {middle.x, scene.upper.y + w / 2.0}},  // top
+        {{w / 2.0, half.y}, {scene.lower.x - w / 2.0, middle.y}},      // left
+        {{w / 2.0, half.y}, {scene.upper.x + w / 2.0, middle.y}},      // right
     };
     for (const Slab& slab : slabs) {
       b2PolygonShape box;

@@ -97,16 +97,26 @@ std::vector<PassThrough> Detectors::find_pass_throughs(std::span<const Vec2> sta
     const Vec2 apart = (q_from + q_move) - (p_from + p_move);
     if (length(apart) < rp + rq) return;             // caught, late: an overlap
     if (dot(apart, q_move - p_move) <= 0.0) return;  // they meet at the end: still approaching
-    found.push_back({std::min(p.ball, q.ball), std::max(p.ball, q.ball)});
+    const Vec2 offset = q_from - p_from;
+    const Vec2 relative = q_move - p_move;
+    const double closest_t =
+        std::clamp(-dot(offset, relative) / length_squared(relative), 0.0, 1.0);
+    const double depth = 1.0 - length(offset + relative * closest_t) / (rp + rq);
+    found.push_back({std::min(p.ball, q.ball), std::max(p.ball, q.ball), depth});
   });
   std::sort(found.begin(), found.end(), [](const PassThrough& x, const PassThrough& y) {
     return x.a != y.a ? x.a < y.a : x.b < y.b;
   });
-  found.erase(std::unique(found.begin(), found.end(),
-                          [](const PassThrough& x, const PassThrough& y) {
-                            return x.a == y.a && x.b == y.b;
-                          }),
-              found.end());
+  // A pair listed for several stretches counts once, with its deepest.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    if (kept > 0 && found[kept - 1].a == found[k].a && found[kept - 1].b == found[k].b) {
+      found[kept - 1].depth = std::max(found[kept - 1].depth, found[k].depth);
+    } else {
+      found[kept++] = found[k];
+    }
+  }
+  found.resize(kept);
   return found;
 }
 

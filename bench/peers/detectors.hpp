@@ -31,6 +31,9 @@ struct PathBreak {
 struct PassThrough {
   std::uint32_t a = 0;  // a < b
   std::uint32_t b = 0;
+  // How deep the straight motions went into each other: 1 − (closest distance) / (r_a + r_b);
+  // near 0 for a graze, 1 for a pass through the centre.
+  double depth = 0.0;
 };
 
 class Detectors {

@@ -161,7 +161,8 @@ std::string count_or_failure(const Outcome& o, std::uint64_t value) {
 void gas_table(std::ostream& out, const std::vector<Outcome>& outcomes,
                const std::vector<EngineInfo>& engines) {
   out << "| N | packing | engine | steps | median ms/step | worst ms/step | median CPU ms/step | "
-         "contacts/step | peak MiB (engine's share) | energy drift | largest overlap | missed | "
+         "contacts/step | peak MiB (engine's share) | energy drift | largest overlap | missed "
+         "(deepest) | "
          "left box |\n"
       << "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Outcome& o : outcomes) {
@@ -179,8 +180,9 @@ void gas_table(std::ostream& out, const std::vector<Outcome>& outcomes,
                             : std::string("—"))
         << " | " << mib(r.peak_kib) << " (" << mib(r.peak_kib - r.harness_kib) << ") | "
         << format("%.2e", r.energy_drift) << " | " << format("%.2e", r.largest_overlap) << " | "
-        << r.pass_throughs << " | " << r.left_box << (r.non_finite ? " (non-finite)" : "")
-        << " |\n";
+        << r.pass_throughs
+        << (r.pass_throughs > 0 ? " (" + format("%.1e", r.deepest_pass_through) + ")" : "") << " | "
+        << r.left_box << (r.non_finite ? " (non-finite)" : "") << " |\n";
   }
 }
 
@@ -358,7 +360,9 @@ int write_report(const ReportOptions& options, const std::string& self) {
          "disks at any step's end, as a fraction of the sum of radii. Missed: pair-steps in which "
          "two disks went through each other: carom's swept test (`carom::sweep_ball_ball`) on a "
          "stretch of the step where both move in a straight line meets an approaching contact, "
-         "yet at the stretch's end the two neither overlap nor approach. A time-stepped engine "
+         "yet at the stretch's end the two neither overlap nor approach; in brackets, how deep the "
+         "deepest went: 1 − (closest distance)/(sum of radii), near 0 for a graze. A time-stepped "
+         "engine "
          "moves each disk in one straight line per step, from its start to its end; carom bends "
          "a disk's path at each contact, reports the contacts with their times and points, and "
          "the check follows each straight piece. Left box: disks whose centre was outside the box "

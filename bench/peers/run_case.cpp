@@ -107,6 +107,7 @@ CaseResult run_case(const CaseSpec& spec) {
     for (const PassThrough& pair :
          detectors.find_pass_throughs(before, after, radii, breaks, scene.lower, scene.upper)) {
       ++result.pass_throughs;
+      result.deepest_pass_through = std::max(result.deepest_pass_through, pair.depth);
       if (scene.balls[pair.a].bullet != scene.balls[pair.b].bullet) {
         bullet_through[scene.balls[pair.a].bullet ? pair.a : pair.b] = 1;
       }
@@ -154,8 +155,9 @@ std::string to_line(const CaseResult& r) {
        << " median_cpu_ms=" << r.median_step_cpu_ms << " peak_kib=" << r.peak_kib
        << " harness_kib=" << r.harness_kib << " energy_drift=" << r.energy_drift
        << " overlap=" << r.largest_overlap << " pass_throughs=" << r.pass_throughs
-       << " bullets_through=" << r.bullets_through << " left_box=" << r.left_box
-       << " non_finite=" << r.non_finite << " contacts=" << r.contacts;
+       << " deepest=" << r.deepest_pass_through << " bullets_through=" << r.bullets_through
+       << " left_box=" << r.left_box << " non_finite=" << r.non_finite
+       << " contacts=" << r.contacts;
   return line.str();
 }
 
@@ -188,6 +190,7 @@ std::optional<CaseResult> parse_line(std::string_view line) {
     r.energy_drift = std::stod(fields.at("energy_drift"));
     r.largest_overlap = std::stod(fields.at("overlap"));
     r.pass_throughs = std::stoull(fields.at("pass_throughs"));
+    r.deepest_pass_through = std::stod(fields.at("deepest"));
     r.bullets_through = static_cast<std::uint32_t>(std::stoul(fields.at("bullets_through")));
     r.left_box = static_cast<std::uint32_t>(std::stoul(fields.at("left_box")));
     r.non_finite = static_cast<std::uint32_t>(std::stoul(fields.at("non_finite")));

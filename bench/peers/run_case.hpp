@@ -43,6 +43,7 @@ struct CaseResult {
   double energy_drift = 0.0;          // (E_end − E_start) / E_start
   double largest_overlap = 0.0;       // over every step's end, fraction of the sum of radii
   std::uint64_t pass_throughs = 0;    // pair-steps: a pair that went through each other in a step
+  double deepest_pass_through = 0.0;  // PassThrough::depth, the largest
   std::uint32_t bullets_through = 0;  // bullets that went through at least one disk
   std::uint32_t left_box = 0;         // disks whose centre was outside the box at a step's end
   std::uint32_t non_finite = 0;       // disks with a NaN or infinite coordinate at the end

@@ -59,6 +59,7 @@ TEST(PeersPassThrough, ReportsTwoDisksThatSwappedSidesInOneStep) {
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].a, 0u);
   EXPECT_EQ(found[0].b, 1u);
+  EXPECT_NEAR(found[0].depth, 1.0, 1e-12);  // straight through each other's centre
 }
 
 TEST(PeersPassThrough, ReportsABulletThroughAStillDisk) {
@@ -67,7 +68,10 @@ TEST(PeersPassThrough, ReportsABulletThroughAStillDisk) {
   const std::vector<Vec2> end{{9.0, 0.3}, {0.0, 0.0}};
   const std::vector<double> radii{0.05, 0.5};
   Detectors detectors;
-  EXPECT_EQ(detectors.find_pass_throughs(start, end, radii, {}, kLower, kUpper).size(), 1u);
+  const std::vector<PassThrough> found =
+      detectors.find_pass_throughs(start, end, radii, {}, kLower, kUpper);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NEAR(found[0].depth, 1.0 - 0.3 / 0.55, 1e-12);  // 0.3 off the centre, radii 0.55
 }
 
 TEST(PeersPassThrough, IgnoresAPairThatBouncedOrIsStillInContact) {

@@ -8,6 +8,7 @@
 //       the engines this build has
 // Exit status: 0 success, 1 a case failed, 2 a usage error (as the carom tool's).
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -119,8 +120,13 @@ int main(int argc, char** argv) {
   try {
     if (args.empty()) throw UsageError("no command");
     if (args[0] == "run") return run(args);
-    // The children are this same program: /proc/self/exe finds it whatever the current directory.
-    if (args[0] == "report") return report(args, "/proc/self/exe");
+    // The children are this same program: /proc/self/exe names it whatever the current
+    // directory, and its target is the name `ps` then shows.
+    if (args[0] == "report") {
+      std::error_code error;
+      const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+      return report(args, error ? std::string("/proc/self/exe") : self.string());
+    }
     if (args[0] == "engines") {
       for (const auto& engine : carom::peers::available_engines()) {
         std::cout << engine.name << "\t" << engine.version << "\n";

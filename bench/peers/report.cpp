@@ -190,19 +190,23 @@ void bullets_table(std::ostream& out, const std::vector<Outcome>& outcomes,
                    const std::vector<EngineInfo>& engines) {
   out << "| engine | steps | bullets through a disk (of " << kBulletCount
       << ") | pass-throughs (pair-steps) | left box | energy drift | largest overlap | median "
-         "ms/step |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+         "ms/step | median CPU ms/step | contacts/step |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Outcome& o : outcomes) {
     if (o.spec.scene != "bullets") continue;
     out << "| " << engine_label(engines, o.spec.engine) << " | " << o.spec.steps << " | ";
     if (!o.result) {
-      out << "failed: " << o.failure << " | | | | | |\n";
+      out << "failed: " << o.failure << " | | | | | | | |\n";
       continue;
     }
     const CaseResult& r = *o.result;
     out << count_or_failure(o, r.bullets_through) << " | " << r.pass_throughs << " | " << r.left_box
         << " | " << format("%.2e", r.energy_drift) << " | " << format("%.2e", r.largest_overlap)
-        << " | " << format("%.3f", r.median_step_ms) << " |\n";
+        << " | " << format("%.3f", r.median_step_ms) << " | "
+        << format("%.3f", r.median_step_cpu_ms) << " | "
+        << (r.contacts >= 0 ? format("%.0f", static_cast<double>(r.contacts) / r.spec.steps)
+                            : std::string("—"))
+        << " |\n";
   }
 }
 

@@ -40,7 +40,7 @@ std::string value_of(const std::vector<std::string>& args, std::size_t& i) {
 
 template <typename Number>
 Number number_of(const std::vector<std::string>& args, std::size_t& i, Number low, Number high) {
-  const std::string name = args[i];
+  const std::string& name = args[i];
   const std::string text = value_of(args, i);
   std::size_t used = 0;
   double value = 0.0;

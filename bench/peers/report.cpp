@@ -69,6 +69,7 @@ Outcome run_in_child(const std::string& self, const CaseSpec& spec) {
                                    "--steps",   std::to_string(spec.steps),
                                    "--seed",    std::to_string(spec.seed)};
   std::vector<char*> argv;
+  argv.reserve(args.size() + 1);
   for (std::string& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
 
@@ -347,7 +348,19 @@ int write_report(const ReportOptions& options, const std::string& self) {
       << "- Build: " << CAROM_PEERS_BUILD << "\n"
       << "- Engines:";
   for (const EngineInfo& e : engines) out << " " << e.version << ";";
-  out << " each case in a process of its own\n\n"
+  out << " each case in a process of its own\n";
+  std::string missing;
+  for (const char* peer : {"box2d", "chipmunk"}) {
+    bool found = false;
+    for (const EngineInfo& e : engines) found |= e.name == peer;
+    if (!found) missing += std::string(missing.empty() ? "" : ", ") + peer;
+  }
+  if (!missing.empty()) {
+    out << "- **Not in this build: " << missing
+        << "** (not installed when it was configured; Debian: libbox2d-dev, libchipmunk-dev; "
+           "`make deps` installs them), so the tables below leave it out\n";
+  }
+  out << "\n"
       << "## The gas: equal disks in a closed box\n\n"
       << "Disks of radius 0.5 and mass 1, elastic, frictionless, no gravity or damping, in a "
          "square box of four static walls; jittered square grid; velocity components normal with "

@@ -41,8 +41,10 @@ void place_on_jittered_grid(std::uint32_t n, double radius, double mass, Vec2 lo
   const std::uint64_t sites = std::uint64_t{grid.per_side} * grid.per_side;
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint64_t site = std::uint64_t{i} * sites / n;
-    const auto column = static_cast<double>(site % grid.per_side);
-    const auto row = static_cast<double>(site / grid.per_side);
+    const std::uint64_t column_index = site % grid.per_side;
+    const std::uint64_t row_index = site / grid.per_side;  // whole rows: integer division
+    const auto column = static_cast<double>(column_index);
+    const auto row = static_cast<double>(row_index);
     SceneBall ball;
     ball.radius = radius;
     ball.mass = mass;

@@ -107,9 +107,6 @@ std::unique_ptr<Engine> make_box2d_engine(const Scene& scene) {
   return std::make_unique<Box2DEngine>(scene);
 }
 
-std::string box2d_version() {
-  return "Box2D " + std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
-         "." + std::to_string(b2_version.revision);
-}
+std::string box2d_version() { return std::string("Box2D ") + CAROM_PEERS_BOX2D_VERSION; }
 
 }  // namespace carom::peers

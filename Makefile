@@ -161,3 +161,12 @@ validate: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_cli
 	tests/science/validate.sh $(CAROM)
+
+# carom beside Box2D 2.4 and Chipmunk 7 on the same scenes (issue 7): every case in a process of
+# its own, a few minutes in all; writes docs/peers.md. A peer that is not installed is left out.
+PACKAGES += libchipmunk-dev
+.PHONY: bench-peers
+bench-peers: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_peers
+	build/release/bench/peers/carom_peers report --out docs/peers.md --command "make bench-peers"

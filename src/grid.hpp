@@ -104,7 +104,6 @@ class Grid {
   bool periodic_ = false;
   std::vector<std::int32_t> head_;       // by cell: first ball, or kNoBall
   std::vector<std::int32_t> next_;       // by ball
-  std::vector<std::int32_t> prev_;       // by ball
   std::vector<std::int32_t> ball_cell_;  // by ball, or kNoBall
   // The cells' wall lists, concatenated (cell c's: wall_ids_[wall_start_[c] .. wall_start_[c+1]]);
   // both empty in a world without walls, so cells then cost only their list head.

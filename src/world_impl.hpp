@@ -13,6 +13,7 @@
 #include "carom/world.hpp"
 #include "event_queue.hpp"
 #include "grid.hpp"
+#include "huge_page_allocator.hpp"
 #include "wall.hpp"
 
 namespace carom {
@@ -50,8 +51,8 @@ struct BallInfo {
 
 struct World::Impl {
   WorldDef def;
-  std::vector<detail::BallSlot> balls;
-  std::vector<detail::BallInfo> infos;  // by slot, beside balls
+  detail::BigVector<detail::BallSlot> balls;
+  detail::BigVector<detail::BallInfo> infos;  // by slot, beside balls
   // By slot, the time of each ball's latest contact: read only by inelastic collapse prevention,
   // so kept (and sized) only when def.collapse_time > 0, saving 8 bytes a ball otherwise.
   std::vector<double> last_contact_times;

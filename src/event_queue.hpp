@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_page_allocator.hpp"
 #include "world_event.hpp"
 
 namespace carom::detail {
@@ -64,16 +65,16 @@ class EventQueue {
   bool open_year();
 
   // By ball.
-  std::vector<Entry> events_;
-  std::vector<std::uint32_t> partner_versions_;
-  std::vector<Place> places_;
-  std::vector<std::uint32_t> link_next_;  // list successor, or heap position
-  std::vector<std::uint32_t> link_prev_;  // list predecessor (kNone at a list's head)
+  BigVector<Entry> events_;
+  BigVector<std::uint32_t> partner_versions_;
+  BigVector<Place> places_;
+  BigVector<std::uint32_t> link_next_;  // list successor, or heap position
+  BigVector<std::uint32_t> link_prev_;  // list predecessor (kNone at a list's head)
 
-  std::vector<std::uint32_t> heap_;     // owners of the current bucket's events, a binary heap
-  std::vector<std::uint32_t> buckets_;  // list heads of the year's buckets, by bucket % size
-  std::uint32_t overflow_ = 0;          // list head of events beyond the year (kNone: empty)
-  std::uint64_t outside_heap_ = 0;      // finite events in buckets or the overflow list
+  BigVector<std::uint32_t> heap_;     // owners of the current bucket's events, a binary heap
+  BigVector<std::uint32_t> buckets_;  // list heads of the year's buckets, by bucket % size
+  std::uint32_t overflow_ = 0;        // list head of events beyond the year (kNone: empty)
+  std::uint64_t outside_heap_ = 0;    // finite events in buckets or the overflow list
   bool year_open_ = false;
   std::int64_t current_ = 0;   // the bucket whose events are in heap_
   std::int64_t year_end_ = 0;  // the first bucket past the year

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "carom/vec2.hpp"
+#include "huge_page_allocator.hpp"
 
 namespace carom::detail {
 
@@ -102,10 +103,9 @@ class Grid {
   std::int32_t nx_ = 1;
   std::int32_t ny_ = 1;
   bool periodic_ = false;
-  std::vector<std::int32_t> head_;       // by cell: first ball, or kNoBall
-  std::vector<std::int32_t> next_;       // by ball
-  std::vector<std::int32_t> prev_;       // by ball
-  std::vector<std::int32_t> ball_cell_;  // by ball, or kNoBall
+  BigVector<std::int32_t> head_;       // by cell: first ball, or kNoBall
+  BigVector<std::int32_t> next_;       // by ball
+  BigVector<std::int32_t> ball_cell_;  // by ball, or kNoBall
   // The cells' wall lists, concatenated (cell c's: wall_ids_[wall_start_[c] .. wall_start_[c+1]]);
   // both empty in a world without walls, so cells then cost only their list head.
   std::vector<std::uint32_t> wall_start_;

@@ -159,6 +159,7 @@ BallId World::add_ball(const BallDef& def) {
     slot = static_cast<std::uint32_t>(w.balls.size());
     w.balls.emplace_back();
     w.infos.emplace_back();
+    if (w.def.collapse_time > 0.0) w.last_contact_times.emplace_back();
     w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));
   }
   BallSlot& b = w.balls[slot];
@@ -171,7 +172,9 @@ BallId World::add_ball(const BallDef& def) {
   detail::BallInfo& info = w.infos[slot];
   info.mass = def.mass;
   info.restitution = def.restitution.value_or(w.def.restitution);
-  info.last_contact_time = -std::numeric_limits<double>::infinity();
+  if (w.def.collapse_time > 0.0) {
+    w.last_contact_times[slot] = -std::numeric_limits<double>::infinity();
+  }
   info.user_data = def.user_data;
   ++b.version;
   ++w.live_count;

@@ -301,7 +301,7 @@ double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t)
   // Inelastic collapse prevention (TC model): recently collided balls bounce elastically.
   const double recent = t - def.collapse_time;
   if (def.collapse_time > 0.0 &&
-      (infos[i].last_contact_time > recent || infos[j].last_contact_time > recent)) {
+      (last_contact_times[i] > recent || last_contact_times[j] > recent)) {
     return 1.0;
   }
   return std::min(infos[i].restitution, infos[j].restitution);
@@ -321,8 +321,10 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     const double impulse = (1.0 + restitution) * approach / (a.inverse_mass + b.inverse_mass);
     a.velocity -= normal * (impulse * a.inverse_mass);
     b.velocity += normal * (impulse * b.inverse_mass);
-    infos[i].last_contact_time = t;
-    infos[j].last_contact_time = t;
+    if (def.collapse_time > 0.0) {
+      last_contact_times[i] = t;
+      last_contact_times[j] = t;
+    }
     const bool a_first = i < j;
     ContactEvent contact;
     contact.time = t;
@@ -356,12 +358,12 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   bool resolved = false;
   if (approach > 0.0) {
     const double restitution =
-        def.collapse_time > 0.0 && infos[i].last_contact_time > t - def.collapse_time
+        def.collapse_time > 0.0 && last_contact_times[i] > t - def.collapse_time
             ? 1.0
             : infos[i].restitution;
     const double speed_change = (1.0 + restitution) * approach;
     a.velocity -= normal * speed_change;
-    infos[i].last_contact_time = t;
+    if (def.collapse_time > 0.0) last_contact_times[i] = t;
     ContactEvent contact;
     contact.time = t;
     contact.kind = ContactKind::ball_wall;

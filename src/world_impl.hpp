@@ -13,6 +13,7 @@
 #include "carom/world.hpp"
 #include "event_queue.hpp"
 #include "grid.hpp"
+#include "huge_page_allocator.hpp"
 #include "wall.hpp"
 
 namespace carom {
@@ -42,7 +43,6 @@ struct alignas(64) BallSlot {
 struct BallInfo {
   double mass = 0.0;
   double restitution = 1.0;
-  double last_contact_time = -std::numeric_limits<double>::infinity();
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
 };
@@ -51,8 +51,11 @@ struct BallInfo {
 
 struct World::Impl {
   WorldDef def;
-  std::vector<detail::BallSlot> balls;
-  std::vector<detail::BallInfo> infos;    // by slot, beside balls
+  detail::BigVector<detail::BallSlot> balls;
+  detail::BigVector<detail::BallInfo> infos;  // by slot, beside balls
+  // By slot, the time of each ball's latest contact: read only by inelastic collapse prevention,
+  // so kept (and sized) only when def.collapse_time > 0, saving 8 bytes a ball otherwise.
+  std::vector<double> last_contact_times;
   std::vector<std::uint32_t> free_slots;  // reused last-freed first
   std::size_t live_count = 0;
   std::vector<detail::Wall> walls;

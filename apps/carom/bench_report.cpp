@@ -18,8 +18,9 @@ std::string bench_text(const BenchOutcome& o) {
   out += fmt::format("  timed: {} collisions in {} s = {} collisions/s ({} ns per collision)\n",
                      o.collisions, readable(o.wall_seconds), readable(o.collisions_per_second()),
                      readable(o.nanoseconds_per_collision()));
-  out += fmt::format("  memory: {} bytes per ball (peak resident set growth)\n",
-                     readable(o.bytes_per_ball()));
+  out +=
+      fmt::format("  memory: {} bytes per ball (peak resident set growth, contact recording off)\n",
+                  readable(o.bytes_per_ball()));
   out += fmt::format("  drift over the timed run: energy {}, momentum {} (relative)\n",
                      readable(o.energy_drift), readable(o.momentum_drift));
   out += fmt::format("  build: {}, {}\n", o.build_type.empty() ? "(no build type)" : o.build_type,

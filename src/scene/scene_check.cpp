@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 
@@ -73,7 +74,9 @@ void check_inside_box(const Scene& scene, const std::vector<SceneBall>& balls,
   const Vec2 lo = scene.world.lower;
   const Vec2 hi = scene.world.upper;
   const auto outside = [&](Vec2 p, double r) {
-    return p.x - r < lo.x || p.x + r > hi.x || p.y - r < lo.y || p.y + r > hi.y;
+    const double slack = kRoundingOverlap * r;
+    return p.x - r < lo.x - slack || p.x + r > hi.x + slack || p.y - r < lo.y - slack ||
+           p.y + r > hi.y + slack;
   };
   const std::string box = "the box [" + number_text(lo.x) + ", " + number_text(hi.x) + "] x [" +
                           number_text(lo.y) + ", " + number_text(hi.y) + "]";
@@ -99,7 +102,7 @@ void check_walls(const Scene& scene, const std::vector<SceneBall>& balls, const 
   for (std::size_t i = 0; i < balls.size(); ++i) {
     for (const SceneWall& wall : walls) {
       const double gap = distance_to_wall(wall, balls[i].position) - balls[i].radius;
-      if (gap < 0.0) {
+      if (gap < -kRoundingOverlap * balls[i].radius) {
         const BallOrigin o = origins.of(i, balls);
         throw PathedSceneError(o.path, "",
                                o.label + " lies across the wall " + path_text(wall.path) +
@@ -154,7 +157,7 @@ void check_overlaps(const Scene& scene, const std::vector<SceneBall>& balls,
       if (hit) return;
       const double reach = radius(i) + radius(j);
       const double gap = length(grid.offset(centre(i), centre(j)));
-      if (gap < reach) {
+      if (gap < reach * (1.0 - kRoundingOverlap)) {
         hit = j;
         overlap = reach - gap;
       }
@@ -201,6 +204,60 @@ std::vector<SceneBall> check_scene(const Scene& scene) {
   check_walls(scene, balls, origins);
   check_overlaps(scene, balls, origins);
   return balls;
+}
+
+void separate_touching(const Scene& scene, std::vector<SceneBall>& balls) {
+  if (balls.empty()) return;
+  const std::vector<SceneWall> walls = scene_walls(scene);
+  double largest = 0.0;
+  for (const SceneBall& b : balls) largest = std::max(largest, b.radius);
+  for (const ScenePocket& p : scene.pockets) largest = std::max(largest, p.radius);
+  std::optional<PeriodicCell> cell;
+  if (scene.world.boundary == Boundary::periodic) {
+    cell = PeriodicCell{scene.world.lower, scene.world.upper};
+  }
+  // Moving a ball out by twice its overlap (plus a few ulps of the reach) leaves it clear of the
+  // one it touched whatever the rounding of the move itself.
+  constexpr double kUlps = 8.0 * std::numeric_limits<double>::epsilon();
+  const auto push = [&](SceneBall& ball, Vec2 away, double overlap, double reach) {
+    const Vec2 direction = normalized(away);
+    if (direction == Vec2{}) return;
+    ball.position += direction * (2.0 * overlap + kUlps * reach);
+  };
+  for (SceneBall& ball : balls) {
+    if (scene.world.boundary == Boundary::box) {
+      const double r = ball.radius;
+      const Vec2 lo = scene.world.lower + Vec2{r, r};
+      const Vec2 hi = scene.world.upper - Vec2{r, r};
+      ball.position.x = std::clamp(ball.position.x, lo.x, hi.x);
+      ball.position.y = std::clamp(ball.position.y, lo.y, hi.y);
+    }
+    for (const SceneWall& wall : walls) {
+      const Vec2 nearest = std::visit(
+          [&](const auto& shape) { return nearest_point(shape, ball.position); }, wall.shape);
+      const double overlap = ball.radius - distance(nearest, ball.position);
+      if (overlap >= 0.0) push(ball, ball.position - nearest, overlap, ball.radius);
+    }
+  }
+  BallGrid grid(2.0 * largest, cell);
+  std::vector<Vec2> centres;
+  std::vector<double> radii;
+  for (const ScenePocket& p : scene.pockets) {
+    grid.insert(centres.size(), p.position);
+    centres.push_back(p.position);
+    radii.push_back(p.radius);
+  }
+  for (SceneBall& ball : balls) {
+    grid.for_each_near(ball.position, [&](std::size_t j) {
+      const Vec2 away = grid.offset(centres[j], ball.position);
+      const double reach = ball.radius + radii[j];
+      const double overlap = reach - length(away);
+      if (overlap >= 0.0) push(ball, away, overlap, reach);
+    });
+    grid.insert(centres.size(), ball.position);
+    centres.push_back(ball.position);
+    radii.push_back(ball.radius);
+  }
 }
 
 }  // namespace scene_detail

@@ -59,7 +59,8 @@ std::optional<std::size_t> SceneWorld::index_of(BallId id) const {
 }
 
 SceneWorld make_world(const Scene& scene) {
-  const std::vector<SceneBall> balls = scene_detail::check_scene(scene);
+  std::vector<SceneBall> balls = scene_detail::check_scene(scene);
+  scene_detail::separate_touching(scene, balls);
   WorldDef def;
   def.boundary = scene.world.boundary;
   def.lower = scene.world.lower;

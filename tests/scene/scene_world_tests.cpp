@@ -114,3 +114,31 @@ TEST(SceneWorld, CapturedSceneContinuesTheRun) {
 
 }  // namespace
 }  // namespace carom
+
+namespace carom {
+namespace {
+
+TEST(SceneWorld, OverlapsOfARoundingAreTouchingAndGetSeparated) {
+  // A saved mid-run state may hold pairs that overlap by a rounding; they load, and the world is
+  // built with the later ball moved clear by a rounding. A real overlap is still an error.
+  const Scene scene = parse_scene(R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10]},
+    "segments": [{"a": [5, 0], "b": [5, 3]}],
+    "balls": [{"position": [2, 6], "radius": 1},
+              {"position": [3.9999999999999, 6], "radius": 1},
+              {"position": [9.0000000000001, 9], "radius": 1},
+              {"position": [6.0000000000000, 2], "radius": 1.0000000000001}]})");
+  SceneWorld built = make_world(scene);
+  EXPECT_EQ(built.world.ball_count(), 4U);
+  EXPECT_FALSE(built.world.audit(0.0).has_value());
+  // Moved by about twice the overlap, no more.
+  EXPECT_NEAR(built.world.position(built.balls[1]).x, 4.0, 1e-12);
+  // Untouched balls keep their position exactly.
+  EXPECT_EQ(built.world.position(built.balls[0]).x, 2.0);
+  EXPECT_THROW(static_cast<void>(
+                   parse_scene(R"({"balls": [{"position": [0, 0]}, {"position": [1.99999, 0]}]})")),
+               SceneError);
+}
+
+}  // namespace
+}  // namespace carom

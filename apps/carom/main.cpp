@@ -9,8 +9,11 @@
 
 #include "bench_command.hpp"
 #include "carom/error.hpp"
+#include "carom/scene.hpp"
 #include "command.hpp"
 #include "exit_codes.hpp"
+#include "info_command.hpp"
+#include "run_command.hpp"
 #include "sweep_command.hpp"
 #include "usage_error.hpp"
 
@@ -52,6 +55,8 @@ int run(const CLI::App& app, const carom::cli::Command& command) {
     return fail(app, kExitUsage, error.what());
   } catch (const carom::InvalidArgument& error) {
     return fail(app, kExitUsage, error.what());
+  } catch (const carom::SceneError& error) {
+    return fail(app, kExitUsage, error.what());
   }
 }
 
@@ -60,8 +65,9 @@ int run_tool(int argc, char** argv) {
   app.set_version_flag("--version", std::string("carom ") + CAROM_VERSION);
   app.require_subcommand(1);
   app.footer("Run 'carom VERB --help' for the options of a verb.");
-  const std::vector<carom::cli::Command> commands{carom::cli::add_sweep_command(app),
-                                                  carom::cli::add_bench_command(app)};
+  const std::vector<carom::cli::Command> commands{
+      carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
+      carom::cli::add_run_command(app), carom::cli::add_info_command(app)};
 
   try {
     app.parse(argc, argv);

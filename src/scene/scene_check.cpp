@@ -198,7 +198,7 @@ PathedSceneError::PathedSceneError(JsonPath where, std::string value, std::strin
 std::vector<SceneBall> check_scene(const Scene& scene) {
   check_names(scene);
   std::vector<std::size_t> starts;
-  const std::vector<SceneBall> balls = expand(scene, &starts);
+  std::vector<SceneBall> balls = expand(scene, &starts);
   const Origins origins(scene, starts);
   check_inside_box(scene, balls, origins);
   check_walls(scene, balls, origins);

@@ -178,8 +178,8 @@ class Runner {
     return std::nullopt;
   }
 
+  // Call while a StopOnInterrupt lives.
   void run(RunOutcome& outcome) {
-    const StopOnInterrupt interrupt;
     start_ = built_.time();
     write_frame();
     switch (plan_.mode) {
@@ -332,6 +332,8 @@ int run(const RunOptions& options) {
   outcome.momentum_before = built.world.momentum();
   outcome.movable_mass = movable_mass(built);
 
+  // Ctrl-C from here on stops the run cleanly; before, nothing has been written yet.
+  const StopOnInterrupt interrupt;
   Runner runner(options, plan, built);
   if (const auto problem = runner.open()) {
     std::cerr << "carom run: error: " << *problem << '\n';
@@ -382,7 +384,9 @@ Command add_run_command(CLI::App& app) {
   verb->footer(
       "Advances the scene's world in exact event order (every contact at the time it\n"
       "happens) by one of: --until T (to scene time T), --steps K --dt DT (K steps of DT),\n"
-      "or --collisions K (the next K contacts; pocket contacts count).\n\n"
+      "or --collisions K (the next K contacts; pocket contacts count). In an open world\n"
+      "whose balls fly apart for good, --collisions waits for contacts that never come\n"
+      "(World::run_collisions keeps going); use --until there.\n\n"
       "Outputs, each written to FILE.tmp and renamed when complete (also on Ctrl-C, which\n"
       "stops the run after the current chunk; exit status 130):\n"
       "  --frames FILE   positions and velocities at the start, every --every time units,\n"

@@ -1,7 +1,8 @@
 # carom: the two commands a newcomer needs, each complete on a fresh Debian machine.
-#   make run    install what is missing, build, run the default two-ball case, draw it
+#   make run    install what is missing, build, run the billiards break (examples/), summarise it
 #   make test   install what is missing, then everything CI checks
-# More: make bench (core benchmarks, optimised build), make format, make lint, make clean.
+# More: make bench (core benchmarks, optimised build), make fuzz (the fuzz targets, 10 minutes
+# each), make format, make lint, make clean.
 # Browser playground: make playground (serve it), make test-web, make bench-web.
 
 SHELL := /bin/bash
@@ -11,13 +12,18 @@ SHELL := /bin/bash
 # Debian packages carom builds with. Kept in one place; `make deps` installs the missing ones.
 PACKAGES := cmake ninja-build g++ clang clang-format clang-tidy \
             libgtest-dev libgmock-dev libbenchmark-dev \
-            nlohmann-json3-dev libcli11-dev libfmt-dev libbox2d-dev
+            nlohmann-json3-dev libcli11-dev libfmt-dev libbox2d-dev libclang-rt-14-dev
 
 RUN_PICTURE := build/two-moving-balls.svg
+RUN_DIR := build/run
 CAROM := build/release/apps/carom/carom
+# The scene loader's libFuzzer target: a bounded run in make test, a longer one in make fuzz.
+FUZZER := build/fuzz/tests/fuzz/carom_scene_fuzz
+FUZZ_SMOKE_SECONDS := 20
 
 .PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
 .PHONY: wasm playground test-web bench-web
+.PHONY: fuzz-build
 
 all: run
 
@@ -39,9 +45,18 @@ deps:
 run: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_cli
-	$(CAROM) sweep --a 0,0,1 --va 6,2 --b 8,3,1.5 --vb -4,-1 --svg $(RUN_PICTURE)
+	mkdir -p $(RUN_DIR)
+	$(CAROM) run examples/billiards.json --until 10 --stats \
+	  --frames $(RUN_DIR)/billiards-frames.csv --events $(RUN_DIR)/billiards-events.jsonl \
+	  --save $(RUN_DIR)/billiards-end.json
+	$(CAROM) sweep --a 0,0,1 --va 6,2 --b 8,3,1.5 --vb -4,-1 --svg $(RUN_PICTURE) >/dev/null
 	echo
-	echo "The picture of this case is in $(RUN_PICTURE) (open it in a browser)."
+	echo "The billiards break (examples/billiards.json), 10 s of it:"
+	echo "  frames (positions, velocities every 0.1 s):  $(RUN_DIR)/billiards-frames.csv"
+	echo "  every contact, as JSON lines:                $(RUN_DIR)/billiards-events.jsonl"
+	echo "  the end state, a scene to continue from:     $(RUN_DIR)/billiards-end.json"
+	echo "The tutorial's two balls, drawn:               $(RUN_PICTURE) (open it in a browser)"
+	echo "More scenes in examples/; try: $(CAROM) run examples/periodic-gas.json --until 1 --stats"
 
 # The browser tests need chromium (and emscripten, node-acorn, npm); .ci/run installs them.
 TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
@@ -98,6 +113,21 @@ test-long: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release
 	CAROM_LONG_TESTS=1 ctest --preset release
+
+fuzz-build:
+	cmake --preset fuzz >/dev/null
+	cmake --build --preset fuzz --target carom_scene_fuzz
+
+# New inputs the fuzzer finds go to build/fuzz/corpus; the committed seeds stay as they are.
+fuzz-smoke: fuzz-build
+	mkdir -p build/fuzz/corpus/scene
+	$(FUZZER) -max_total_time=$(FUZZ_SMOKE_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	  -artifact_prefix=build/fuzz/ build/fuzz/corpus/scene tests/fuzz/corpus/scene
+
+fuzz: fuzz-build
+	mkdir -p build/fuzz/corpus/scene
+	$(FUZZER) -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	  -artifact_prefix=build/fuzz/ build/fuzz/corpus/scene tests/fuzz/corpus/scene
 
 format-check:
 	git ls-files -- '*.hpp' '*.cpp' | xargs clang-format --dry-run -Werror

@@ -9,10 +9,13 @@
 
 #include "bench_command.hpp"
 #include "carom/error.hpp"
+#include "carom/scene.hpp"
 #include "command.hpp"
 #include "eos_command.hpp"
 #include "exit_codes.hpp"
 #include "gas_command.hpp"
+#include "info_command.hpp"
+#include "run_command.hpp"
 #include "sweep_command.hpp"
 #include "usage_error.hpp"
 
@@ -54,6 +57,8 @@ int run(const CLI::App& app, const carom::cli::Command& command) {
     return fail(app, kExitUsage, error.what());
   } catch (const carom::InvalidArgument& error) {
     return fail(app, kExitUsage, error.what());
+  } catch (const carom::SceneError& error) {
+    return fail(app, kExitUsage, error.what());
   }
 }
 
@@ -64,7 +69,8 @@ int run_tool(int argc, char** argv) {
   app.footer("Run 'carom VERB --help' for the options of a verb.");
   const std::vector<carom::cli::Command> commands{
       carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
-      carom::cli::add_gas_command(app), carom::cli::add_eos_command(app)};
+      carom::cli::add_gas_command(app), carom::cli::add_eos_command(app),
+      carom::cli::add_run_command(app), carom::cli::add_info_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,13 @@
+// carom tool: `carom info SCENE`, what a scene file holds and whether it is valid.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+
+namespace carom::cli {
+
+// Adds the info verb and its options to app.
+[[nodiscard]] Command add_info_command(CLI::App& app);
+
+}  // namespace carom::cli

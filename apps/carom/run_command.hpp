@@ -1,0 +1,18 @@
+// carom tool: `carom run SCENE`, advancing a scene file's world by a time, a number of steps or a
+// number of collisions, and writing frames, contact events, the end state and a summary.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+
+namespace carom::cli {
+
+// Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it); its outputs are
+// complete up to where it stopped.
+inline constexpr int kExitInterrupted = 130;
+
+// Adds the run verb and its options to app.
+[[nodiscard]] Command add_run_command(CLI::App& app);
+
+}  // namespace carom::cli

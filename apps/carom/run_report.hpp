@@ -1,0 +1,43 @@
+// carom tool: the summary `carom run --stats` prints, as text or one JSON object.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "carom/vec2.hpp"
+
+namespace carom::cli {
+
+struct RunOutcome {
+  std::string scene;
+  std::size_t balls_at_start = 0;
+  std::size_t balls_at_end = 0;
+  double start_time = 0.0;  // scene time
+  double end_time = 0.0;
+  std::uint64_t collisions = 0;  // every contact resolved, pocket contacts included
+  std::uint64_t ball_ball = 0;
+  std::uint64_t ball_wall = 0;
+  std::uint64_t potted = 0;
+  std::uint64_t frames = 0;
+  double setup_seconds = 0.0;  // loading the scene and building the world
+  double wall_seconds = 0.0;   // the run itself, writing outputs included
+  double energy_before = 0.0;
+  double energy_after = 0.0;
+  Vec2 momentum_before;
+  Vec2 momentum_after;
+  double movable_mass = 0.0;  // at the start
+  bool interrupted = false;
+
+  // (E_after - E_before) / E_before; 0 when E_before is 0.
+  [[nodiscard]] double energy_drift() const;
+  // |P_after - P_before| / sqrt(2·M·E_before): the change of momentum relative to the momentum
+  // scale of the gas; 0 when E_before is 0.
+  [[nodiscard]] double momentum_drift() const;
+  [[nodiscard]] double collisions_per_second() const;
+};
+
+[[nodiscard]] std::string run_text(const RunOutcome& outcome);
+[[nodiscard]] nlohmann::ordered_json run_json(const RunOutcome& outcome);
+
+}  // namespace carom::cli

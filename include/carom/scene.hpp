@@ -1,0 +1,238 @@
+// carom: scenes — a world described as data (JSON), loaded, checked, built and saved.
+//
+// A Scene is a plain value: the world's settings, explicit balls, static walls (segments,
+// polylines, arcs), pockets, and generators that place many balls from a few numbers. It is read
+// from and written to JSON (format: docs/scenes.md, schema: docs/scene.schema.json); saving and
+// loading round-trip exactly, every double bit for bit. Everything that can be wrong with a scene
+// is reported as one carom::SceneError naming the file, line and column, the JSON path of the
+// field (balls[3].radius), the value as written and what is wrong with it.
+//
+// This is the separate library target carom::scene (it links nlohmann_json); the core carom
+// library has no dependencies.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "carom/shapes.hpp"
+#include "carom/vec2.hpp"
+#include "carom/world.hpp"
+
+namespace carom {
+
+// The version written in "carom_scene" and the only one read.
+inline constexpr int kSceneFormatVersion = 1;
+// The most balls a scene may hold (explicit and generated): a typo with extra zeros is refused at
+// once rather than after allocating gigabytes.
+inline constexpr std::uint64_t kMaxSceneBalls = 10'000'000;
+
+// Thrown for a scene that cannot be read or built. what() reads
+//   FILE:LINE:COLUMN: PATH = VALUE: PROBLEM (did you mean "KEY"?)
+// leaving out the parts that do not apply (no file for a string, no location for a problem found
+// after loading, no suggestion unless a key is unknown).
+class SceneError : public std::runtime_error {
+ public:
+  struct Details {
+    std::string file;        // "" when the scene came from a string with no name
+    std::size_t line = 0;    // 1-based; 0 when unknown
+    std::size_t column = 0;  // 1-based, in characters (UTF-8 code points); 0 when unknown
+    std::string path;        // JSON path of the field: "balls[3].radius"; "" for the whole file
+    std::string value;       // the value as written in the file (or as the number reads); may be ""
+    std::string problem;     // what is wrong, e.g. "must be > 0"
+    std::string suggestion;  // for an unknown key: the nearest known key; otherwise ""
+  };
+
+  explicit SceneError(Details details);
+
+  [[nodiscard]] const Details& details() const noexcept { return details_; }
+
+ private:
+  Details details_;
+};
+
+// Labels only: carom computes in whatever units the numbers are in. Written for the reader and
+// for plots. Energy is mass·length²/time², temperature is in energy units (Boltzmann constant 1).
+struct SceneUnits {
+  std::string length = "m";
+  std::string time = "s";
+  std::string mass = "kg";
+};
+
+struct SceneBall {
+  std::optional<std::string> name;  // unique among balls and pockets when given
+  Vec2 position;
+  Vec2 velocity;
+  double radius = 1.0;                // > 0
+  double mass = 1.0;                  // > 0, or kImmovable ("mass": "immovable" in JSON)
+  std::optional<double> restitution;  // in [0, 1]; unset: the world's
+  std::optional<std::string> color;   // any CSS colour text ("#ff8800", "red"); unset: by speed
+};
+
+struct ScenePolyline {
+  std::vector<Vec2> points;  // at least 2
+  bool closed = false;       // join the last point back to the first
+};
+
+// A pocket: a circle that swallows any ball that touches it. Built as an immovable ball; a ball
+// that touches it is removed from the world at that instant (see step_scene). Pockets take no
+// part in energy or momentum (they are immovable).
+struct ScenePocket {
+  std::optional<std::string> name;
+  Vec2 position;
+  double radius = 1.0;  // > 0
+};
+
+enum class GeneratorPlacement : std::uint8_t {
+  lattice,  // a triangular lattice spread over the region (periodic if the region is the cell)
+  random,   // uniform random positions, each ball tried until it overlaps nothing placed before
+};
+
+enum class VelocityDistribution : std::uint8_t {
+  fixed,              // every ball gets `velocity`
+  uniform_direction,  // speed `speed`, direction uniform on the circle
+  maxwell_boltzmann,  // each component normal with variance temperature / mass
+};
+
+struct SceneVelocities {
+  VelocityDistribution distribution = VelocityDistribution::fixed;
+  Vec2 value;                // fixed
+  double speed = 1.0;        // uniform_direction, >= 0
+  double temperature = 1.0;  // maxwell_boltzmann, >= 0
+  // Subtract the mean velocity so the generated balls' total momentum is zero (to rounding).
+  bool zero_momentum = false;
+};
+
+// N balls of one kind placed by rule. Exactly one of radius and packing_fraction is given: the
+// packing fraction φ of the generator's own balls in its region gives r = sqrt(φ·A / (N·π)).
+struct SceneGenerator {
+  std::optional<std::string> name;  // generated ball i is named NAME#i when given
+  GeneratorPlacement placement = GeneratorPlacement::lattice;
+  std::uint64_t count = 0;  // >= 1
+  std::optional<double> radius;
+  std::optional<double> packing_fraction;  // in (0, 1)
+  // The axis-aligned region the balls lie inside (whole balls). Unset: the world's box or
+  // periodic cell; for a periodic world the balls then fill the cell periodically.
+  std::optional<Vec2> region_lower;
+  std::optional<Vec2> region_upper;
+  double mass = 1.0;  // > 0
+  std::optional<double> restitution;
+  std::optional<std::string> color;
+  SceneVelocities velocities;
+  std::uint64_t seed = 1;  // for random placement and random velocities (std::mt19937_64)
+};
+
+struct SceneSettings {
+  Boundary boundary = Boundary::open;
+  Vec2 lower;  // box or periodic cell
+  Vec2 upper;
+  double restitution = 1.0;
+  double collapse_time = 0.0;
+  double cell_size = 0.0;
+};
+
+struct Scene {
+  std::string description;  // free text for the reader
+  SceneUnits units;
+  SceneSettings world;
+  double time = 0.0;  // the scene's clock at the start (a saved scene continues from it)
+  std::vector<SceneBall> balls;
+  std::vector<Segment> segments;
+  std::vector<ScenePolyline> polylines;
+  std::vector<Arc> arcs;
+  std::vector<ScenePocket> pockets;
+  std::vector<SceneGenerator> generators;
+};
+
+// ---- reading and writing ----
+
+// Parses and checks a scene: the JSON itself, every field (type, finite numbers, ranges, unknown
+// keys), and the geometry (no ball overlapping another, a wall or a pocket, every ball inside a
+// box, every generator placeable). source_name names the text in messages (a file name or "").
+// Throws SceneError.
+[[nodiscard]] Scene parse_scene(std::string_view json_text, std::string_view source_name = "");
+// Reads the file and parses it (a file that cannot be read is a SceneError too).
+[[nodiscard]] Scene load_scene(const std::filesystem::path& path);
+
+// The scene as JSON text (ends with a newline). parse_scene(to_json_text(s)) == s, bit for bit.
+[[nodiscard]] std::string to_json_text(const Scene& scene);
+// Writes to_json_text(scene) to path (directly; callers wanting atomic replacement write the
+// text themselves). Throws SceneError if the file cannot be written.
+void save_scene(const Scene& scene, const std::filesystem::path& path);
+
+// ---- building ----
+
+// Every ball of the scene: the explicit balls, then each generator's balls in generator order.
+// Deterministic: the same scene gives the same balls, bit for bit, on the same build.
+// Throws SceneError (path generators[i]) when a generator cannot place its balls.
+[[nodiscard]] std::vector<SceneBall> expand_balls(const Scene& scene);
+
+// A world built from a scene, and how to find the scene's balls in it.
+struct SceneWorld {
+  World world;
+  Scene scene;                  // the scene it was built from, generators expanded into balls
+  std::vector<BallId> balls;    // balls[i] is scene.balls[i] (null once removed by a pocket)
+  std::vector<BallId> pockets;  // pockets[k] is scene.pockets[k]
+  std::unordered_map<std::string, BallId> by_name;  // named balls and pockets
+  double start_time = 0.0;                          // scene time when the world's clock read 0
+
+  // The scene's clock now: start_time + world.time().
+  [[nodiscard]] double time() const noexcept { return start_time + world.time(); }
+  // The scene index of a ball id, or nothing (a pocket, or not from this scene).
+  [[nodiscard]] std::optional<std::size_t> index_of(BallId id) const;
+};
+
+// Builds the world (walls in order: segments, then polylines' segments, then arcs, so wall ids
+// follow the scene). Throws SceneError for a scene the world refuses.
+[[nodiscard]] SceneWorld make_world(const Scene& scene);
+
+// A ball that fell into a pocket.
+struct PottedBall {
+  double time = 0.0;     // scene time
+  std::size_t ball = 0;  // scene ball index
+  std::size_t pocket = 0;
+};
+
+// Like World::step / run_until / run_collisions, with pockets: a ball that touches a pocket is
+// removed at that instant and the run goes on. Each call appends every contact (pocket contacts
+// included) to contacts and every potting to potted when they are given. Contact times in
+// `contacts` are world times (add start_time for scene time).
+double step_scene(SceneWorld& scene_world, double dt, std::vector<ContactEvent>* contacts = nullptr,
+                  std::vector<PottedBall>* potted = nullptr);
+std::uint64_t run_scene_collisions(SceneWorld& scene_world, std::uint64_t count,
+                                   std::vector<ContactEvent>* contacts = nullptr,
+                                   std::vector<PottedBall>* potted = nullptr);
+
+// The world's state now as a scene to continue from: the same settings, walls and pockets, the
+// balls still in the world (positions and velocities now, names, colours, restitution kept), no
+// generators, and time = scene_world.time().
+[[nodiscard]] Scene capture_scene(const SceneWorld& scene_world);
+
+// ---- inspecting ----
+
+struct SceneSummary {
+  std::size_t balls = 0;  // movable and immovable, pockets excluded
+  std::size_t immovable = 0;
+  std::size_t walls = 0;  // segments, polyline segments and arcs
+  std::size_t pockets = 0;
+  double kinetic_energy = 0.0;
+  Vec2 momentum;
+  double ball_area = 0.0;                  // sum of π r² over balls
+  std::optional<double> packing_fraction;  // ball_area / area of the box or cell
+  // The smallest surface-to-surface distance between two balls (negative: overlap), and which.
+  std::optional<double> smallest_gap;
+  std::size_t smallest_gap_a = 0;
+  std::size_t smallest_gap_b = 0;
+};
+
+// Summarises expanded balls (as from expand_balls) in the scene's world. Uses a grid: O(N).
+[[nodiscard]] SceneSummary summarize(const Scene& scene, std::span<const SceneBall> balls);
+
+}  // namespace carom

@@ -1,0 +1,31 @@
+// carom scenes internal: distances from a point to the static shapes, and the scene's walls as a
+// flat list in the world's order.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "carom/scene.hpp"
+#include "json_walk.hpp"
+
+namespace carom::scene_detail {
+
+[[nodiscard]] Vec2 nearest_point(const Segment& segment, Vec2 p);
+[[nodiscard]] Vec2 nearest_point(const Arc& arc, Vec2 p);
+
+// One wall of the scene and where it came from ("segments[2]", "polylines[0].points[3]").
+struct SceneWall {
+  std::variant<Segment, Arc> shape;
+  JsonPath path;
+};
+
+// Segments, then each polyline's segments, then arcs: the order make_world adds them in.
+[[nodiscard]] std::vector<SceneWall> scene_walls(const Scene& scene);
+
+[[nodiscard]] double distance_to_wall(const SceneWall& wall, Vec2 p);
+
+// The shortest text that reads back to the same double.
+[[nodiscard]] std::string number_text(double value);
+
+}  // namespace carom::scene_detail

@@ -1,0 +1,331 @@
+// Reading a scene: JSON text to a checked carom::Scene. Field by field here; the geometry
+// (overlaps, balls outside a box, generators that cannot place their balls) in scene_check.cpp.
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "carom/scene.hpp"
+#include "json_fields.hpp"
+#include "scene_check.hpp"
+
+namespace carom {
+namespace {
+
+using scene_detail::JsonPath;
+using scene_detail::JsonSource;
+using scene_detail::ObjectFields;
+
+JsonPath child(JsonPath path, std::size_t index) {
+  path.emplace_back(index);
+  return path;
+}
+
+double positive(const ObjectFields& fields, std::string_view key, double fallback) {
+  const double value = fields.number_or(key, fallback);
+  if (!(value > 0.0)) fields.fail(key, "must be > 0");
+  return value;
+}
+
+double non_negative(const ObjectFields& fields, std::string_view key, double fallback) {
+  const double value = fields.number_or(key, fallback);
+  if (!(value >= 0.0)) fields.fail(key, "must be >= 0");
+  return value;
+}
+
+std::optional<double> restitution(const ObjectFields& fields) {
+  const std::optional<double> value = fields.optional_number("restitution");
+  if (value && !(*value >= 0.0 && *value <= 1.0)) fields.fail("restitution", "must lie in [0, 1]");
+  return value;
+}
+
+// "mass": a number > 0, or "immovable".
+double mass(const ObjectFields& fields) {
+  if (!fields.has("mass")) return 1.0;
+  const nlohmann::json& value = fields.at("mass");
+  if (value.is_string()) {
+    if (value.get<std::string>() == "immovable") return kImmovable;
+    fields.fail("mass", "must be a number > 0 or \"immovable\"");
+  }
+  return positive(fields, "mass", 1.0);
+}
+
+std::optional<std::string> color(const ObjectFields& fields) {
+  std::optional<std::string> text = fields.optional_string("color");
+  if (text && text->empty()) fields.fail("color", "must not be empty");
+  return text;
+}
+
+SceneUnits read_units(const ObjectFields& fields) {
+  SceneUnits units;
+  if (!fields.has("units")) return units;
+  const ObjectFields u(fields.source(), fields.at("units"), fields.path_of("units"),
+                       {"length", "time", "mass"});
+  units.length = u.optional_string("length").value_or(units.length);
+  units.time = u.optional_string("time").value_or(units.time);
+  units.mass = u.optional_string("mass").value_or(units.mass);
+  return units;
+}
+
+SceneSettings read_settings(const ObjectFields& fields) {
+  SceneSettings settings;
+  if (!fields.has("world")) return settings;
+  const ObjectFields w(fields.source(), fields.at("world"), fields.path_of("world"),
+                       {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size"});
+  const std::string boundary = w.optional_string("boundary").value_or("open");
+  if (boundary == "open") {
+    settings.boundary = Boundary::open;
+  } else if (boundary == "box") {
+    settings.boundary = Boundary::box;
+  } else if (boundary == "periodic") {
+    settings.boundary = Boundary::periodic;
+  } else {
+    w.fail("boundary", "must be \"open\", \"box\" or \"periodic\"");
+  }
+  if (settings.boundary != Boundary::open) {
+    settings.lower = w.vector("lower");
+    settings.upper = w.vector("upper");
+    if (!(settings.upper.x > settings.lower.x && settings.upper.y > settings.lower.y)) {
+      w.fail("upper", "must lie above and to the right of lower (" +
+                          std::to_string(settings.lower.x) + ", " +
+                          std::to_string(settings.lower.y) + ")");
+    }
+  } else {
+    settings.lower = w.optional_vector("lower").value_or(Vec2{});
+    settings.upper = w.optional_vector("upper").value_or(Vec2{});
+  }
+  const std::optional<double> e = w.optional_number("restitution");
+  if (e) {
+    if (!(*e >= 0.0 && *e <= 1.0)) w.fail("restitution", "must lie in [0, 1]");
+    settings.restitution = *e;
+  }
+  settings.collapse_time = non_negative(w, "collapse_time", 0.0);
+  settings.cell_size = non_negative(w, "cell_size", 0.0);
+  return settings;
+}
+
+SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
+  const ObjectFields f(source, json, path,
+                       {"name", "position", "velocity", "radius", "mass", "restitution", "color"});
+  SceneBall ball;
+  ball.name = f.optional_string("name");
+  ball.position = f.vector("position");
+  ball.velocity = f.optional_vector("velocity").value_or(Vec2{});
+  ball.radius = positive(f, "radius", 1.0);
+  ball.mass = mass(f);
+  ball.restitution = restitution(f);
+  ball.color = color(f);
+  return ball;
+}
+
+Segment read_segment(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
+  const ObjectFields f(source, json, path, {"a", "b"});
+  return {f.vector("a"), f.vector("b")};
+}
+
+ScenePolyline read_polyline(const JsonSource& source, const nlohmann::json& json,
+                            const JsonPath& path) {
+  const ObjectFields f(source, json, path, {"points", "closed"});
+  ScenePolyline polyline;
+  const nlohmann::json& points = f.at("points");
+  if (!points.is_array() || points.size() < 2) {
+    f.fail("points", "must be an array of at least two points [x, y]");
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    polyline.points.push_back(
+        ObjectFields::vector_value(source, points[i], child(f.path_of("points"), i)));
+  }
+  polyline.closed = f.boolean_or("closed", false);
+  return polyline;
+}
+
+Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
+  const ObjectFields f(source, json, path, {"center", "radius", "start_angle", "end_angle"});
+  Arc arc;
+  arc.center = f.vector("center");
+  arc.radius = positive(f, "radius", 1.0);
+  arc.start_angle = f.number("start_angle");
+  arc.end_angle = f.number("end_angle");
+  const double span = arc.end_angle - arc.start_angle;
+  constexpr double kTwoPi = 6.283185307179586;
+  // The world accepts spans up to 2π plus a rounding (include/carom/shapes.hpp).
+  if (!(span >= 0.0 && span <= kTwoPi * (1.0 + 1e-15))) {
+    f.fail("end_angle",
+           "end_angle - start_angle must lie in [0, 2*pi] (radians, counter-clockwise)");
+  }
+  return arc;
+}
+
+ScenePocket read_pocket(const JsonSource& source, const nlohmann::json& json,
+                        const JsonPath& path) {
+  const ObjectFields f(source, json, path, {"name", "position", "radius"});
+  ScenePocket pocket;
+  pocket.name = f.optional_string("name");
+  pocket.position = f.vector("position");
+  pocket.radius = positive(f, "radius", 1.0);
+  return pocket;
+}
+
+SceneVelocities read_velocities(const ObjectFields& generator) {
+  SceneVelocities v;
+  if (!generator.has("velocity")) return v;
+  const ObjectFields f(generator.source(), generator.at("velocity"), generator.path_of("velocity"),
+                       {"distribution", "value", "speed", "temperature", "zero_momentum"});
+  const std::string distribution = f.optional_string("distribution").value_or("fixed");
+  if (distribution == "fixed") {
+    v.distribution = VelocityDistribution::fixed;
+  } else if (distribution == "uniform_direction") {
+    v.distribution = VelocityDistribution::uniform_direction;
+  } else if (distribution == "maxwell_boltzmann") {
+    v.distribution = VelocityDistribution::maxwell_boltzmann;
+  } else {
+    f.fail("distribution", "must be \"fixed\", \"uniform_direction\" or \"maxwell_boltzmann\"");
+  }
+  v.value = f.optional_vector("value").value_or(Vec2{});
+  v.speed = non_negative(f, "speed", 1.0);
+  v.temperature = non_negative(f, "temperature", 1.0);
+  v.zero_momentum = f.boolean_or("zero_momentum", false);
+  return v;
+}
+
+SceneGenerator read_generator(const JsonSource& source, const nlohmann::json& json,
+                              const JsonPath& path) {
+  const ObjectFields f(source, json, path,
+                       {"name", "placement", "count", "radius", "packing_fraction", "region",
+                        "mass", "restitution", "color", "velocity", "seed"});
+  SceneGenerator g;
+  g.name = f.optional_string("name");
+  const std::string placement = f.optional_string("placement").value_or("lattice");
+  if (placement == "lattice") {
+    g.placement = GeneratorPlacement::lattice;
+  } else if (placement == "random") {
+    g.placement = GeneratorPlacement::random;
+  } else {
+    f.fail("placement", "must be \"lattice\" or \"random\"");
+  }
+  g.count = f.whole_number("count");
+  if (g.count < 1) f.fail("count", "must be >= 1");
+  if (g.count > kMaxSceneBalls) {
+    f.fail("count", "must be at most " + std::to_string(kMaxSceneBalls));
+  }
+  if (f.has("radius") == f.has("packing_fraction")) {
+    f.fail(f.has("radius") ? "packing_fraction" : "radius",
+           "give exactly one of radius and packing_fraction");
+  }
+  if (f.has("radius")) g.radius = positive(f, "radius", 1.0);
+  if (f.has("packing_fraction")) {
+    g.packing_fraction = f.number("packing_fraction");
+    if (!(*g.packing_fraction > 0.0 && *g.packing_fraction < 1.0)) {
+      f.fail("packing_fraction", "must lie in (0, 1)");
+    }
+  }
+  if (f.has("region")) {
+    const ObjectFields r(source, f.at("region"), f.path_of("region"), {"lower", "upper"});
+    g.region_lower = r.vector("lower");
+    g.region_upper = r.vector("upper");
+    if (!(g.region_upper->x > g.region_lower->x && g.region_upper->y > g.region_lower->y)) {
+      r.fail("upper", "must lie above and to the right of lower");
+    }
+  }
+  g.mass = positive(f, "mass", 1.0);
+  g.restitution = restitution(f);
+  g.color = color(f);
+  g.velocities = read_velocities(f);
+  g.seed = f.optional_whole_number("seed").value_or(1);
+  return g;
+}
+
+template <typename Item, typename Read>
+void read_array(const ObjectFields& fields, std::string_view key, std::vector<Item>& out,
+                Read read) {
+  const nlohmann::json* items = fields.array(key);
+  if (items == nullptr) return;
+  out.reserve(items->size());
+  for (std::size_t i = 0; i < items->size(); ++i) {
+    out.push_back(read(fields.source(), (*items)[i], child(fields.path_of(key), i)));
+  }
+}
+
+nlohmann::json parse_json(const JsonSource& source) {
+  try {
+    return nlohmann::json::parse(source.text());
+  } catch (const nlohmann::json::parse_error& error) {
+    // what() reads "[json.exception.parse_error.101] parse error at line L, column C: WHAT";
+    // the location is given again, in characters, by error_at.
+    std::string what = error.what();
+    if (const std::size_t colon = what.find(": "); colon != std::string::npos) {
+      what = what.substr(colon + 2);
+    }
+    const std::size_t offset = error.byte > 0 ? error.byte - 1 : 0;
+    throw source.error_at(offset, "malformed JSON: " + what);
+  } catch (const nlohmann::json::out_of_range& error) {
+    // The one range error the parser raises: a number beyond a double, "number overflow parsing
+    // 'TOKEN'".
+    const std::string what = error.what();
+    const std::size_t open = what.find('\'');
+    const std::size_t close = what.rfind('\'');
+    if (open != std::string::npos && close > open) {
+      const std::string token = what.substr(open + 1, close - open - 1);
+      if (const auto found = scene_detail::find_number(source.text(), token)) {
+        throw source.error(found->path,
+                           "is beyond the range of a double (about 1.8e308): it would read as "
+                           "infinity");
+      }
+    }
+    throw source.error_at(0, "malformed JSON: " + what);
+  }
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view json_text, std::string_view source_name) {
+  const JsonSource source(json_text, source_name);
+  const nlohmann::json json = parse_json(source);
+  const ObjectFields top(source, json, {},
+                         {"carom_scene", "description", "units", "world", "time", "balls",
+                          "segments", "polylines", "arcs", "pockets", "generators"});
+  if (top.has("carom_scene")) {
+    const std::uint64_t version = top.whole_number("carom_scene");
+    if (version != kSceneFormatVersion) {
+      top.fail("carom_scene",
+               "this carom reads scene format " + std::to_string(kSceneFormatVersion) + " only");
+    }
+  }
+  Scene scene;
+  scene.description = top.optional_string("description").value_or("");
+  scene.units = read_units(top);
+  scene.world = read_settings(top);
+  scene.time = top.number_or("time", 0.0);
+  read_array(top, "balls", scene.balls, read_ball);
+  read_array(top, "segments", scene.segments, read_segment);
+  read_array(top, "polylines", scene.polylines, read_polyline);
+  read_array(top, "arcs", scene.arcs, read_arc);
+  read_array(top, "pockets", scene.pockets, read_pocket);
+  read_array(top, "generators", scene.generators, read_generator);
+  if (scene.balls.size() > kMaxSceneBalls) {
+    top.fail("balls", "holds more than " + std::to_string(kMaxSceneBalls) + " balls");
+  }
+  try {
+    static_cast<void>(scene_detail::check_scene(scene));
+  } catch (const scene_detail::PathedSceneError& error) {
+    throw source.located(error, error.where());
+  }
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw SceneError(
+        {path.string(), 0, 0, "", "", std::string("cannot open: ") + std::strerror(errno), ""});
+  }
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) {
+    throw SceneError({path.string(), 0, 0, "", "", "cannot read", ""});
+  }
+  return parse_scene(content.str(), path.string());
+}
+
+}  // namespace carom

@@ -1,0 +1,172 @@
+// Writing a scene as JSON. Doubles are written in their shortest round-trip form (std::to_chars),
+// always with a '.' or an exponent so that they read back as doubles ("-0.0" stays negative
+// zero), hence parse_scene(to_json_text(s)) gives s back bit for bit.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "carom/scene.hpp"
+#include "scene_geometry.hpp"
+
+namespace carom {
+namespace {
+
+using scene_detail::number_text;
+
+std::string num(double value) {
+  if (value == kImmovable) return "\"immovable\"";
+  std::string text = number_text(value);
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
+
+std::string str(const std::string& text) { return nlohmann::json(text).dump(); }
+
+std::string vec(Vec2 v) { return "[" + num(v.x) + ", " + num(v.y) + "]"; }
+
+// Members of one JSON object on one line: "key": value, ...
+class Line {
+ public:
+  Line& add(std::string_view key, const std::string& value) {
+    text_ += (text_.empty() ? "{" : ", ") + std::string("\"") + std::string(key) + "\": " + value;
+    return *this;
+  }
+  [[nodiscard]] std::string done() const { return text_.empty() ? "{}" : text_ + "}"; }
+
+ private:
+  std::string text_;
+};
+
+std::string boundary_text(Boundary boundary) {
+  switch (boundary) {
+    case Boundary::box:
+      return "\"box\"";
+    case Boundary::periodic:
+      return "\"periodic\"";
+    default:
+      return "\"open\"";
+  }
+}
+
+std::string ball_line(const SceneBall& b) {
+  Line line;
+  if (b.name) line.add("name", str(*b.name));
+  line.add("position", vec(b.position)).add("velocity", vec(b.velocity));
+  line.add("radius", num(b.radius)).add("mass", num(b.mass));
+  if (b.restitution) line.add("restitution", num(*b.restitution));
+  if (b.color) line.add("color", str(*b.color));
+  return line.done();
+}
+
+std::string polyline_line(const ScenePolyline& p) {
+  std::string points = "[";
+  for (std::size_t i = 0; i < p.points.size(); ++i) {
+    points += (i == 0 ? "" : ", ") + vec(p.points[i]);
+  }
+  return Line().add("points", points + "]").add("closed", p.closed ? "true" : "false").done();
+}
+
+std::string velocities_line(const SceneVelocities& v) {
+  Line line;
+  switch (v.distribution) {
+    case VelocityDistribution::uniform_direction:
+      line.add("distribution", "\"uniform_direction\"");
+      break;
+    case VelocityDistribution::maxwell_boltzmann:
+      line.add("distribution", "\"maxwell_boltzmann\"");
+      break;
+    default:
+      line.add("distribution", "\"fixed\"");
+  }
+  line.add("value", vec(v.value)).add("speed", num(v.speed));
+  line.add("temperature", num(v.temperature));
+  return line.add("zero_momentum", v.zero_momentum ? "true" : "false").done();
+}
+
+std::string generator_line(const SceneGenerator& g) {
+  Line line;
+  if (g.name) line.add("name", str(*g.name));
+  line.add("placement", g.placement == GeneratorPlacement::random ? "\"random\"" : "\"lattice\"");
+  line.add("count", std::to_string(g.count));
+  if (g.radius) line.add("radius", num(*g.radius));
+  if (g.packing_fraction) line.add("packing_fraction", num(*g.packing_fraction));
+  if (g.region_lower && g.region_upper) {
+    line.add("region",
+             Line().add("lower", vec(*g.region_lower)).add("upper", vec(*g.region_upper)).done());
+  }
+  line.add("mass", num(g.mass));
+  if (g.restitution) line.add("restitution", num(*g.restitution));
+  if (g.color) line.add("color", str(*g.color));
+  line.add("velocity", velocities_line(g.velocities));
+  return line.add("seed", std::to_string(g.seed)).done();
+}
+
+// "  \"key\": [\n    item,\n    item\n  ]" (nothing when empty).
+template <typename Item, typename Write>
+void write_array(std::string& out, std::string_view key, const std::vector<Item>& items,
+                 Write write) {
+  if (items.empty()) return;
+  out += ",\n  \"" + std::string(key) + "\": [\n";
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out += "    " + write(items[i]) + (i + 1 < items.size() ? ",\n" : "\n");
+  }
+  out += "  ]";
+}
+
+}  // namespace
+
+std::string to_json_text(const Scene& scene) {
+  std::string out = "{\n  \"carom_scene\": " + std::to_string(kSceneFormatVersion);
+  if (!scene.description.empty()) out += ",\n  \"description\": " + str(scene.description);
+  out += ",\n  \"units\": " + Line()
+                                  .add("length", str(scene.units.length))
+                                  .add("time", str(scene.units.time))
+                                  .add("mass", str(scene.units.mass))
+                                  .done();
+  const SceneSettings& w = scene.world;
+  out += ",\n  \"world\": " + Line()
+                                  .add("boundary", boundary_text(w.boundary))
+                                  .add("lower", vec(w.lower))
+                                  .add("upper", vec(w.upper))
+                                  .add("restitution", num(w.restitution))
+                                  .add("collapse_time", num(w.collapse_time))
+                                  .add("cell_size", num(w.cell_size))
+                                  .done();
+  out += ",\n  \"time\": " + num(scene.time);
+  write_array(out, "balls", scene.balls, ball_line);
+  write_array(out, "segments", scene.segments,
+              [](const Segment& s) { return Line().add("a", vec(s.a)).add("b", vec(s.b)).done(); });
+  write_array(out, "polylines", scene.polylines, polyline_line);
+  write_array(out, "arcs", scene.arcs, [](const Arc& a) {
+    return Line()
+        .add("center", vec(a.center))
+        .add("radius", num(a.radius))
+        .add("start_angle", num(a.start_angle))
+        .add("end_angle", num(a.end_angle))
+        .done();
+  });
+  write_array(out, "pockets", scene.pockets, [](const ScenePocket& p) {
+    Line line;
+    if (p.name) line.add("name", str(*p.name));
+    return line.add("position", vec(p.position)).add("radius", num(p.radius)).done();
+  });
+  write_array(out, "generators", scene.generators, generator_line);
+  out += "\n}\n";
+  return out;
+}
+
+void save_scene(const Scene& scene, const std::filesystem::path& path) {
+  const std::string text = to_json_text(scene);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    throw SceneError(
+        {path.string(), 0, 0, "", "", std::string("cannot write: ") + std::strerror(errno), ""});
+  }
+  out << text;
+  out.close();
+  if (!out) throw SceneError({path.string(), 0, 0, "", "", "cannot write", ""});
+}
+
+}  // namespace carom

@@ -1,0 +1,247 @@
+// `carom run`: the three ways to advance, the outputs it writes (frames, events, end state,
+// summary), and Ctrl-C leaving complete files.
+#include <fcntl.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "run_tool.hpp"
+#include "scene_files.hpp"
+
+namespace carom::cli::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(RunCommand, TwoBallsUntilWithStatsAsJson) {
+  const ToolRun run =
+      run_carom({"run", example("two-moving-balls.json"), "--until", "2", "--stats", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["collisions"], 1);  // they touch once, at t = 0.5, and fly apart
+  EXPECT_EQ(json["end_time"], 2.0);
+  EXPECT_EQ(json["interrupted"], false);
+  // One elastic bounce: energy and momentum are kept to a few roundings.
+  EXPECT_LT(std::abs(json["energy_drift"].get<double>()), 1e-15);
+  EXPECT_LT(json["momentum_drift"].get<double>(), 1e-15);
+}
+
+TEST(RunCommand, FramesAsCsvAtTheAskedTimes) {
+  const ScratchDir dir;
+  const std::string frames = (dir / "cradle.csv").string();
+  const ToolRun run = run_carom({"run", example("newtons-cradle.json"), "--until", "10", "--frames",
+                                 frames, "--every", "2.5", "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, "");
+  const std::vector<std::string> lines = lines_of(read_file(frames));
+  // A header, then frames at 0, 2.5, 5, 7.5 and 10 of six balls each.
+  ASSERT_EQ(lines.size(), 1U + 5U * 6U);
+  EXPECT_EQ(lines[0], "time,index,name,x,y,vx,vy,radius");
+  EXPECT_EQ(lines[1], "0,0,striker,3,3,2,0,1");
+  EXPECT_THAT(lines[7], ::testing::StartsWith("2.5,0,striker,8,3,2,0,1"));
+  // By t = 10 the striker has stopped at x = 10 and ball 5 moves at 2 (the chain reached it at
+  // 3.5; it had 40 - 1 - 20 = 19 units of room, so it has not met the wall yet at 10 - 3.5).
+  EXPECT_EQ(lines[25], "10,0,striker,10,3,0,0,1");
+  EXPECT_THAT(lines[30], ::testing::StartsWith("10,5,ball5,33,3,2,0,1"));
+  EXPECT_FALSE(std::filesystem::exists(frames + ".tmp"));
+}
+
+TEST(RunCommand, FramesAsExtendedXyz) {
+  const ScratchDir dir;
+  const std::string frames = (dir / "box.xyz").string();
+  const ToolRun run = run_carom({"run", example("box-of-1000.json"), "--steps", "3", "--dt", "0.5",
+                                 "--frames", frames, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::string> lines = lines_of(read_file(frames));
+  // Four frames (start and each step) of a count line, a comment line and 1000 balls.
+  ASSERT_EQ(lines.size(), 4U * 1002U);
+  EXPECT_EQ(lines[0], "1000");
+  EXPECT_THAT(lines[1], HasSubstr("Lattice=\"100 0 0 0 100 0 0 0 1\""));
+  EXPECT_THAT(lines[1], HasSubstr("Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:index:I:1"));
+  EXPECT_THAT(lines[1], HasSubstr("pbc=\"F F F\""));
+  EXPECT_THAT(lines[1 + 1002], HasSubstr("Time=0.5"));
+  EXPECT_THAT(lines[2], ::testing::StartsWith("big "));
+  std::istringstream row(lines[2]);
+  std::string species;
+  double x = 0;
+  double y = 0;
+  double z = 1;
+  row >> species >> x >> y >> z;
+  EXPECT_EQ(z, 0.0);
+  EXPECT_GE(x, 0.0);
+  EXPECT_LE(x, 100.0);
+}
+
+TEST(RunCommand, EventsAsJsonLinesIncludingPotting) {
+  const ScratchDir dir;
+  const std::string events = (dir / "events.jsonl").string();
+  const ToolRun run = run_carom(
+      {"run", example("billiards.json"), "--until", "10", "--events", events, "--stats", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto stats = nlohmann::json::parse(run.out);
+  const std::vector<std::string> lines = lines_of(read_file(events));
+  EXPECT_EQ(lines.size(), stats["collisions"].get<std::size_t>());
+  std::size_t potted = 0;
+  double last_time = 0.0;
+  for (const std::string& line : lines) {
+    const auto event = nlohmann::json::parse(line);
+    EXPECT_GE(event["time"].get<double>(), last_time);  // in time order
+    last_time = event["time"].get<double>();
+    if (event["kind"] == "potted") {
+      ++potted;
+      EXPECT_TRUE(event.contains("pocket"));
+    }
+  }
+  EXPECT_EQ(potted, stats["potted"].get<std::size_t>());
+  EXPECT_GT(potted, 0U);
+  EXPECT_EQ(stats["balls_at_end"].get<std::size_t>(), 16U - potted);
+}
+
+TEST(RunCommand, SaveThenContinueMatchesOneLongRun) {
+  const ScratchDir dir;
+  const std::string middle = (dir / "middle.json").string();
+  const std::string end_a = (dir / "a.json").string();
+  const std::string end_b = (dir / "b.json").string();
+  ASSERT_EQ(run_carom({"run", example("pinball.json"), "--until", "4", "--save", end_a, "--quiet"})
+                .exit_code,
+            0);
+  ASSERT_EQ(run_carom({"run", example("pinball.json"), "--until", "2", "--save", middle, "--quiet"})
+                .exit_code,
+            0);
+  const ToolRun second = run_carom({"run", middle, "--until", "4", "--save", end_b, "--quiet"});
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  const auto a = nlohmann::json::parse(read_file(end_a));
+  const auto b = nlohmann::json::parse(read_file(end_b));
+  EXPECT_EQ(a["time"], 4.0);
+  EXPECT_EQ(b["time"], 4.0);
+  ASSERT_EQ(a["balls"].size(), b["balls"].size());
+  // The restart re-rounds each ball's position once (docs/world.md: a world keeps per-ball
+  // clocks), so the two runs agree to rounding, not bit for bit; over 2 time units of a few
+  // dozen contacts the difference stays far below 1e-9 of the bowl's size.
+  for (std::size_t i = 0; i < a["balls"].size(); ++i) {
+    EXPECT_NEAR(a["balls"][i]["position"][0].get<double>(),
+                b["balls"][i]["position"][0].get<double>(), 1e-8);
+    EXPECT_NEAR(a["balls"][i]["position"][1].get<double>(),
+                b["balls"][i]["position"][1].get<double>(), 1e-8);
+  }
+}
+
+TEST(RunCommand, CollisionsCountsExactly) {
+  const ToolRun run =
+      run_carom({"run", example("box-of-1000.json"), "--collisions", "5000", "--stats", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["collisions"], 5000);
+  // Elastic box: energy kept to rounding over 5000 bounces.
+  EXPECT_LT(std::abs(json["energy_drift"].get<double>()), 1e-12);
+}
+
+TEST(RunCommand, TextStatsNameEveryFigure) {
+  const ToolRun run =
+      run_carom({"run", example("newtons-cradle.json"), "--steps", "10", "--dt", "1", "--stats"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* part : {"collisions", "collisions/s", "wall time", "energy", "momentum"}) {
+    EXPECT_THAT(run.out, HasSubstr(part));
+  }
+  // The progress bar is drawn only on a terminal; these tests' stderr is a file.
+  EXPECT_EQ(run.err, "");
+}
+
+// Ctrl-C: the run stops after its current chunk, and every output is complete.
+TEST(RunCommand, InterruptLeavesCompleteFiles) {
+  const ScratchDir dir;
+  const std::string frames = (dir / "gas.csv").string();
+  const std::string events = (dir / "gas.jsonl").string();
+  const std::string save = (dir / "gas-end.json").string();
+  std::vector<std::string> words{CAROM_CLI_PATH, "run",     example("periodic-gas.json"),
+                                 "--until",      "10000",   "--frames",
+                                 frames,         "--every", "0.05",
+                                 "--events",     events,    "--save",
+                                 save,           "--quiet"};
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t child = 0;
+  ASSERT_EQ(posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  // Wait until the run is under way (its first frame is being written), then interrupt.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!std::filesystem::exists(frames + ".tmp")) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  kill(child, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_FALSE(std::filesystem::exists(frames + ".tmp"));
+  EXPECT_FALSE(std::filesystem::exists(events + ".tmp"));
+  // Frames: a header and whole frames of 10^5 rows, every row complete.
+  const std::vector<std::string> rows = lines_of(read_file(frames));
+  ASSERT_GE(rows.size(), 1U + 100000U);
+  EXPECT_EQ((rows.size() - 1) % 100000U, 0U);
+  EXPECT_EQ(std::count(rows.back().begin(), rows.back().end(), ','), 7);
+  // Events: every line is a whole JSON object.
+  for (const std::string& line : lines_of(read_file(events))) {
+    EXPECT_TRUE(nlohmann::json::accept(line)) << line;
+  }
+  // The end state is a scene at the time the run stopped (0 if Ctrl-C came while the first frame
+  // was still being written, as it can in a slow sanitizer build), and the last frame is of it.
+  const auto saved = nlohmann::json::parse(read_file(save));
+  EXPECT_GE(saved["time"].get<double>(), 0.0);
+  EXPECT_EQ(std::strtod(rows.back().c_str(), nullptr), saved["time"].get<double>());
+  EXPECT_LT(saved["time"].get<double>(), 10000.0);
+  EXPECT_EQ(saved["balls"].size(), 100000U);
+}
+
+TEST(InfoCommand, CountsEnergyPackingAndSmallestGap) {
+  const ToolRun run = run_carom({"info", example("periodic-gas.json"), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["balls"], 100000);
+  EXPECT_EQ(json["generated_balls"], 100000);
+  EXPECT_NEAR(json["packing_fraction"].get<double>(), 0.5, 1e-12);
+  // Maxwell–Boltzmann at temperature 1 in 2D: E ≈ N·T, within a few standard deviations
+  // (relative sd of the sum of 2·10⁵ squared normals is sqrt(2/2e5) = 0.003).
+  EXPECT_NEAR(json["kinetic_energy"].get<double>() / 1e5, 1.0, 5 * 0.003);
+  EXPECT_GT(json["smallest_gap"]["gap"].get<double>(), 0.0);
+  EXPECT_EQ(json["valid"], true);
+}
+
+TEST(InfoCommand, TextNamesTheClosestPair) {
+  const ToolRun run = run_carom({"info", example("billiards.json")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("balls             16 (0 generated, 0 immovable)"));
+  EXPECT_THAT(run.out, HasSubstr("pockets           6"));
+  // The racked balls are 1e-4 apart (examples/billiards.json).
+  EXPECT_THAT(run.out, HasSubstr("smallest gap      0.0001 ("));
+  EXPECT_THAT(run.out, HasSubstr("valid             yes"));
+}
+
+}  // namespace
+}  // namespace carom::cli::test

@@ -1,0 +1,201 @@
+// Every kind of bad scene gets one SceneError that names where (line, column, JSON path), the
+// value as written and what is wrong.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "carom/scene.hpp"
+
+namespace carom {
+namespace {
+
+using ::testing::HasSubstr;
+
+SceneError::Details error_of(const std::string& text) {
+  try {
+    static_cast<void>(parse_scene(text, "test.json"));
+  } catch (const SceneError& error) {
+    return error.details();
+  }
+  ADD_FAILURE() << "no error for " << text;
+  return {};
+}
+
+std::string message_of(const std::string& text) {
+  try {
+    static_cast<void>(parse_scene(text, "test.json"));
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+TEST(SceneErrors, MalformedJsonGivesLineAndColumn) {
+  const auto d = error_of("{\n  \"balls\": [\n    {\"position\": [1, 2],, \"radius\": 1}\n  ]\n}");
+  EXPECT_EQ(d.file, "test.json");
+  EXPECT_EQ(d.line, 3U);
+  EXPECT_EQ(d.column, 25U);  // the second comma
+  EXPECT_THAT(d.problem, HasSubstr("malformed JSON"));
+  EXPECT_THAT(message_of("{\n  \"balls\": [\n    {\"position\": [1, 2],, \"radius\": 1}\n  ]\n}"),
+              HasSubstr("test.json:3:25: malformed JSON"));
+}
+
+TEST(SceneErrors, ColumnsCountCharactersNotBytes) {
+  // "é" is two bytes in UTF-8 but one column.
+  const auto d = error_of("{\"description\": \"\xc3\xa9\", x}");
+  EXPECT_EQ(d.line, 1U);
+  EXPECT_EQ(d.column, 22U);  // the x, the 23rd byte
+}
+
+TEST(SceneErrors, TruncatedFile) {
+  const auto d = error_of("{\"balls\": [");
+  EXPECT_EQ(d.line, 1U);
+  EXPECT_THAT(d.problem, HasSubstr("unexpected end of input"));
+}
+
+TEST(SceneErrors, UnknownKeyNamesPathAndNearestKey) {
+  const auto d = error_of(
+      "{\"balls\": [{\"position\": [0, 0]}, {\"position\": [5, 0]}, {\"position\": [9, 0]},\n"
+      "  {\"position\": [20, 0], \"raduis\": 2}]}");
+  EXPECT_EQ(d.path, "balls[3].raduis");
+  EXPECT_EQ(d.suggestion, "radius");
+  EXPECT_EQ(d.line, 2U);
+  EXPECT_EQ(d.column, 25U);
+  EXPECT_EQ(d.problem, "unknown key");
+  EXPECT_THAT(message_of("{\"wrold\": {}}"),
+              HasSubstr("test.json:1:2: wrold = \"wrold\": unknown key (did you mean \"world\"?)"));
+}
+
+TEST(SceneErrors, UnknownKeyFarFromAnyGetsNoSuggestion) {
+  const auto d = error_of("{\"zzzzzzzzzz\": 1}");
+  EXPECT_EQ(d.suggestion, "");
+}
+
+TEST(SceneErrors, WrongType) {
+  const auto d = error_of("{\"balls\": [{\"position\": [0, 0], \"radius\": \"big\"}]}");
+  EXPECT_EQ(d.path, "balls[0].radius");
+  EXPECT_EQ(d.value, "\"big\"");
+  EXPECT_EQ(d.problem, "must be a number, not a string (JSON numbers have no NaN or infinity)");
+  EXPECT_EQ(error_of("{\"balls\": {}}").problem, "must be an array, not an object");
+  EXPECT_EQ(error_of("{\"balls\": [{\"position\": [0]}]}").path, "balls[0].position");
+  EXPECT_EQ(error_of("[]").problem, "must be an object, not an array");
+}
+
+TEST(SceneErrors, NanAndInfinityAsStrings) {
+  for (const char* spelling : {"\"nan\"", "\"NaN\"", "\"inf\"", "\"-Infinity\""}) {
+    const auto d = error_of(std::string("{\"balls\": [{\"position\": [0, ") + spelling +
+                            "], \"radius\": 1}]}");
+    EXPECT_EQ(d.path, "balls[0].position[1]") << spelling;
+    EXPECT_EQ(d.value, spelling);
+    EXPECT_THAT(d.problem, HasSubstr("must be a number")) << spelling;
+  }
+  // Bare NaN is not JSON at all.
+  EXPECT_THAT(error_of("{\"time\": NaN}").problem, HasSubstr("malformed JSON"));
+}
+
+TEST(SceneErrors, NumberBeyondDoubleRange) {
+  const auto d = error_of("{\"balls\": [{\"position\": [0, 0],\n \"velocity\": [1e400, 0]}]}");
+  EXPECT_EQ(d.path, "balls[0].velocity[0]");
+  EXPECT_EQ(d.value, "1e400");
+  EXPECT_EQ(d.line, 2U);
+  EXPECT_EQ(d.column, 15U);
+  EXPECT_THAT(d.problem, HasSubstr("beyond the range of a double"));
+  EXPECT_EQ(error_of("{\"time\": -2e308}").path, "time");
+}
+
+TEST(SceneErrors, RadiusAndMassMustBePositive) {
+  EXPECT_EQ(error_of("{\"balls\": [{\"position\": [0, 0], \"radius\": 0}]}").problem,
+            "must be > 0");
+  EXPECT_EQ(error_of("{\"balls\": [{\"position\": [0, 0], \"radius\": -1}]}").path,
+            "balls[0].radius");
+  const auto d = error_of("{\"balls\": [{\"position\": [0, 0], \"mass\": -0.5}]}");
+  EXPECT_EQ(d.path, "balls[0].mass");
+  EXPECT_EQ(d.value, "-0.5");
+  EXPECT_EQ(d.problem, "must be > 0");
+  EXPECT_THAT(error_of("{\"balls\": [{\"position\": [0, 0], \"mass\": \"heavy\"}]}").problem,
+              HasSubstr("\"immovable\""));
+}
+
+TEST(SceneErrors, RestitutionOutsideUnitInterval) {
+  const auto d = error_of("{\"balls\": [{\"position\": [0, 0], \"restitution\": 1.5}]}");
+  EXPECT_EQ(d.path, "balls[0].restitution");
+  EXPECT_EQ(d.value, "1.5");
+  EXPECT_EQ(d.problem, "must lie in [0, 1]");
+  EXPECT_EQ(error_of("{\"world\": {\"restitution\": -0.1}}").path, "world.restitution");
+}
+
+TEST(SceneErrors, OverlappingBallsNameBothAndTheOverlap) {
+  const std::string message = message_of(
+      "{\"balls\": [{\"name\": \"cue\", \"position\": [0, 0], \"radius\": 1},\n"
+      "            {\"position\": [5, 0], \"radius\": 1},\n"
+      "            {\"name\": \"eight\", \"position\": [1.5, 0], \"radius\": 1}]}");
+  EXPECT_THAT(message, HasSubstr("test.json:3:13: balls[2] = "));
+  EXPECT_THAT(message, HasSubstr("balls[2] \"eight\" overlaps balls[0] \"cue\" by 0.5"));
+}
+
+TEST(SceneErrors, BallOutsideClosedBox) {
+  const auto d = error_of(
+      "{\"world\": {\"boundary\": \"box\", \"lower\": [0, 0], \"upper\": [10, 10]},\n"
+      " \"balls\": [{\"position\": [9.5, 5], \"radius\": 1}]}");
+  EXPECT_EQ(d.path, "balls[0]");
+  EXPECT_EQ(d.line, 2U);
+  EXPECT_THAT(d.problem, HasSubstr("reaches outside the box [0, 10] x [0, 10]"));
+}
+
+TEST(SceneErrors, BallAcrossAWall) {
+  const auto d = error_of(
+      "{\"segments\": [{\"a\": [0, -5], \"b\": [0, 5]}],\n"
+      " \"balls\": [{\"name\": \"a\", \"position\": [0.25, 0], \"radius\": 1}]}");
+  EXPECT_EQ(d.path, "balls[0]");
+  EXPECT_THAT(d.problem, HasSubstr("lies across the wall segments[0]: it overlaps it by 0.75"));
+  const auto arc = error_of(
+      "{\"arcs\": [{\"center\": [0, 0], \"radius\": 10, \"start_angle\": 0, \"end_angle\": 3}],\n"
+      " \"balls\": [{\"position\": [0, 9.5], \"radius\": 1}]}");
+  EXPECT_THAT(arc.problem, HasSubstr("arcs[0]"));
+}
+
+TEST(SceneErrors, ImpossiblePackingFraction) {
+  const auto d = error_of(
+      "{\"world\": {\"boundary\": \"periodic\", \"lower\": [0, 0], \"upper\": [100, 100]},\n"
+      " \"generators\": [{\"count\": 1000, \"packing_fraction\": 0.95}]}");
+  EXPECT_EQ(d.path, "generators[0]");
+  EXPECT_EQ(d.line, 2U);
+  EXPECT_THAT(d.problem, HasSubstr("do not fit on a triangular lattice"));
+  const auto random = error_of(
+      "{\"world\": {\"boundary\": \"box\", \"lower\": [0, 0], \"upper\": [100, 100]},\n"
+      " \"generators\": [{\"placement\": \"random\", \"count\": 1000, \"packing_fraction\": "
+      "0.7}]}");
+  EXPECT_THAT(random.problem, HasSubstr("random placement cannot reach packing fraction 0.7"));
+  EXPECT_EQ(error_of("{\"generators\": [{\"count\": 10, \"packing_fraction\": 1.5}]}").problem,
+            "must lie in (0, 1)");
+  EXPECT_THAT(error_of("{\"generators\": [{\"count\": 10, \"radius\": 1}]}").problem,
+              HasSubstr("needs a region"));
+}
+
+TEST(SceneErrors, DuplicateNames) {
+  const auto d = error_of(
+      "{\"balls\": [{\"name\": \"a\", \"position\": [0, 0]}, {\"name\": \"a\", \"position\": [5, "
+      "0]}]}");
+  EXPECT_EQ(d.path, "balls[1].name");
+  EXPECT_THAT(d.problem, HasSubstr("taken already by balls[0]"));
+}
+
+TEST(SceneErrors, MissingField) {
+  const auto d = error_of("{\"balls\": [{\"radius\": 1}]}");
+  EXPECT_EQ(d.path, "balls[0].position");
+  EXPECT_EQ(d.problem, "is missing");
+  EXPECT_EQ(d.column, 12U);  // located at the object that lacks it
+}
+
+TEST(SceneErrors, UnreadableFile) {
+  try {
+    static_cast<void>(load_scene("/nonexistent/scene.json"));
+    FAIL();
+  } catch (const SceneError& error) {
+    EXPECT_THAT(std::string(error.what()), HasSubstr("/nonexistent/scene.json: cannot open"));
+  }
+}
+
+}  // namespace
+}  // namespace carom

@@ -1,0 +1,135 @@
+// Saving and loading a scene round-trips exactly: every double bit for bit.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+
+#include "carom/scene.hpp"
+
+namespace carom {
+namespace {
+
+std::uint64_t bits(double value) { return std::bit_cast<std::uint64_t>(value); }
+
+// Any finite double, drawn uniformly over bit patterns (so tiny, huge, subnormal and negative
+// zero all occur), plus values from ordinary arithmetic that have long decimal expansions.
+double random_double(std::mt19937_64& random) {
+  for (;;) {
+    const double value = std::bit_cast<double>(random());
+    if (std::isfinite(value)) return value;
+  }
+}
+
+Scene random_scene(std::mt19937_64& random, int balls) {
+  Scene scene;
+  scene.description = "random \"quoted\" \\ text\n\xc3\xa9";
+  scene.time = random_double(random);
+  scene.world.boundary = Boundary::open;
+  scene.world.lower = {random_double(random), random_double(random)};
+  scene.world.upper = {random_double(random), random_double(random)};
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < balls; ++i) {
+    SceneBall ball;
+    // Far apart so the scene is valid: ball i lies near x = 10·i.
+    ball.position = {10.0 * i + unit(random), unit(random) / 3.0};
+    ball.velocity = {random_double(random), random_double(random)};
+    ball.radius = 0.1 + unit(random);
+    ball.mass = i % 5 == 0 ? kImmovable : std::fabs(random_double(random));
+    if (ball.mass == 0.0) ball.mass = 1.0;
+    if (i % 2 == 0) ball.restitution = unit(random);
+    if (i % 3 == 0) ball.name = "ball " + std::to_string(i);
+    if (i % 4 == 0) ball.color = "#ff8800";
+    scene.balls.push_back(ball);
+  }
+  scene.segments.push_back({{-5.0, -100.0 + unit(random)}, {random_double(random), -100.0}});
+  return scene;
+}
+
+TEST(SceneRoundTrip, EveryDoubleReadsBackBitIdentical) {
+  std::mt19937_64 random(20261130);
+  for (int round = 0; round < 50; ++round) {
+    const Scene scene = random_scene(random, 40);
+    const std::string text = to_json_text(scene);
+    const Scene back = parse_scene(text, "round-trip");
+    ASSERT_EQ(back.balls.size(), scene.balls.size());
+    EXPECT_EQ(bits(back.time), bits(scene.time));
+    EXPECT_EQ(back.description, scene.description);
+    for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+      const SceneBall& a = scene.balls[i];
+      const SceneBall& b = back.balls[i];
+      EXPECT_EQ(bits(a.position.x), bits(b.position.x));
+      EXPECT_EQ(bits(a.position.y), bits(b.position.y));
+      EXPECT_EQ(bits(a.velocity.x), bits(b.velocity.x)) << text;
+      EXPECT_EQ(bits(a.velocity.y), bits(b.velocity.y));
+      EXPECT_EQ(bits(a.radius), bits(b.radius));
+      EXPECT_EQ(bits(a.mass), bits(b.mass));
+      EXPECT_EQ(a.restitution.has_value(), b.restitution.has_value());
+      if (a.restitution) {
+        EXPECT_EQ(bits(*a.restitution), bits(*b.restitution));
+      }
+      EXPECT_EQ(a.name, b.name);
+      EXPECT_EQ(a.color, b.color);
+    }
+    EXPECT_EQ(bits(back.segments[0].b.x), bits(scene.segments[0].b.x));
+    // And the text itself is a fixed point.
+    EXPECT_EQ(to_json_text(back), text);
+  }
+}
+
+TEST(SceneRoundTrip, NegativeZeroStaysNegative) {
+  Scene scene;
+  SceneBall ball;
+  ball.velocity = {-0.0, 0.0};
+  scene.balls.push_back(ball);
+  const Scene back = parse_scene(to_json_text(scene));
+  EXPECT_TRUE(std::signbit(back.balls[0].velocity.x));
+  EXPECT_FALSE(std::signbit(back.balls[0].velocity.y));
+}
+
+TEST(SceneRoundTrip, ExtremeValues) {
+  Scene scene;
+  SceneBall ball;
+  ball.position = {std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::max()};
+  ball.velocity = {std::numeric_limits<double>::max(), 0.1 + 0.2};
+  ball.radius = std::numeric_limits<double>::min();
+  scene.balls.push_back(ball);
+  const Scene back = parse_scene(to_json_text(scene));
+  EXPECT_EQ(bits(back.balls[0].position.x), bits(ball.position.x));
+  EXPECT_EQ(bits(back.balls[0].position.y), bits(ball.position.y));
+  EXPECT_EQ(bits(back.balls[0].velocity.x), bits(ball.velocity.x));
+  EXPECT_EQ(bits(back.balls[0].velocity.y), bits(ball.velocity.y));
+  EXPECT_EQ(bits(back.balls[0].radius), bits(ball.radius));
+}
+
+TEST(SceneRoundTrip, GeneratorsPocketsPolylinesArcsAndSettingsSurvive) {
+  const std::string text = R"({
+    "carom_scene": 1,
+    "units": {"length": "cm", "time": "ms", "mass": "g"},
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [100, 50], "restitution": 0.9,
+              "collapse_time": 1e-6, "cell_size": 0},
+    "balls": [{"name": "cue", "position": [10, 10], "velocity": [5, 1], "radius": 1}],
+    "polylines": [{"points": [[20, 20], [30, 20], [30, 30]], "closed": true}],
+    "arcs": [{"center": [70, 25], "radius": 5, "start_angle": 0, "end_angle": 3.14159}],
+    "pockets": [{"name": "corner", "position": [98, 48], "radius": 1.5}],
+    "generators": [{"name": "gas", "placement": "random", "count": 20, "radius": 0.5,
+                    "region": {"lower": [40, 2], "upper": [60, 20]}, "mass": 2,
+                    "velocity": {"distribution": "maxwell_boltzmann", "temperature": 3,
+                                 "zero_momentum": true}, "seed": 9}]
+  })";
+  const Scene scene = parse_scene(text);
+  const std::string saved = to_json_text(scene);
+  EXPECT_EQ(to_json_text(parse_scene(saved)), saved);
+  EXPECT_EQ(scene.units.length, "cm");
+  EXPECT_EQ(scene.world.boundary, Boundary::box);
+  ASSERT_EQ(scene.generators.size(), 1U);
+  EXPECT_EQ(scene.generators[0].velocities.distribution, VelocityDistribution::maxwell_boltzmann);
+  EXPECT_TRUE(scene.generators[0].velocities.zero_momentum);
+  EXPECT_EQ(scene.pockets[0].name, "corner");
+  EXPECT_TRUE(scene.polylines[0].closed);
+}
+
+}  // namespace
+}  // namespace carom

@@ -11,6 +11,7 @@
 #include "carom/error.hpp"
 #include "command.hpp"
 #include "exit_codes.hpp"
+#include "render_command.hpp"
 #include "sweep_command.hpp"
 #include "usage_error.hpp"
 
@@ -61,7 +62,8 @@ int run_tool(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Run 'carom VERB --help' for the options of a verb.");
   const std::vector<carom::cli::Command> commands{carom::cli::add_sweep_command(app),
-                                                  carom::cli::add_bench_command(app)};
+                                                  carom::cli::add_bench_command(app),
+                                                  carom::cli::add_render_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -115,8 +115,9 @@ PlotSpec rate_plot(const Scene& scene, const Run& run, double until) {
                               series("ball–wall", "#2060c0", ball_wall)};
   if (pocket_contacts > 0) all.push_back(series("potted", "#202020", potted));
   return {"Collisions per unit time",
-          std::to_string(run.contacts.size()) + " contacts in " + readable(until) + " " +
-              scene.units.time + ", counted in " + std::to_string(kRateBins) + " bins of " +
+          std::to_string(run.contacts.size()) +
+              (run.contacts.size() == 1 ? " contact" : " contacts") + " in " + readable(until) +
+              " " + scene.units.time + ", counted in " + std::to_string(kRateBins) + " bins of " +
               readable(width) + " " + scene.units.time,
           "time (" + scene.units.time + ")",
           "contacts per " + scene.units.time,

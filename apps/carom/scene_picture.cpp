@@ -26,6 +26,12 @@ std::vector<Vec2> box_outline(Vec2 lower, Vec2 upper) {
   return {lower, {upper.x, lower.y}, upper, {lower.x, upper.y}, lower};
 }
 
+// A trail in its ball's colour, darkened so that a white ball's trail still shows on white.
+Rgb trail_colour(Rgb ball) {
+  constexpr double kDarken = 0.75;
+  return {ball.r * kDarken, ball.g * kDarken, ball.b * kDarken};
+}
+
 bool is_immovable(const SceneBall& ball) { return ball.mass == kImmovable; }
 
 Rgb ball_colour(const SceneWorld& scene_world, std::size_t index, Vec2 velocity,
@@ -133,7 +139,7 @@ ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style
       add_wrapped_copies(picture.balls, disc, picture.clip->lower, picture.clip->upper);
     if (style.trails != nullptr) {
       for (std::vector<Vec2>& run : style.trails->paths(i, now)) {
-        picture.trails.push_back({std::move(run), disc.fill, kTrailWidth});
+        picture.trails.push_back({std::move(run), trail_colour(disc.fill), kTrailWidth});
       }
     }
     if (style.arrow_seconds && !is_immovable(scene.balls[i])) {

@@ -67,10 +67,12 @@ std::vector<double> round_ticks(double low, double high, int count) {
       break;
     }
   }
+  // A hair of slack at both ends, so that rounding in low / step does not drop an end tick.
+  constexpr double kSlack = 1e-9;
   std::vector<double> ticks;
-  for (double k = std::ceil(low / step); k * step <= high * (1.0 + 1e-12) + 1e-300; k += 1.0) {
-    const double t = k * step;
-    ticks.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
+  const double last = std::floor(high / step + kSlack);
+  for (double k = std::ceil(low / step - kSlack); k <= last; k += 1.0) {
+    ticks.push_back(k == 0.0 ? 0.0 : k * step);
   }
   return ticks;
 }

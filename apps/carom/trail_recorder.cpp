@@ -1,5 +1,6 @@
 #include "trail_recorder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace carom::cli {
@@ -77,6 +78,10 @@ std::vector<std::vector<Vec2>> TrailRecorder::paths(std::size_t ball, double now
     run.push_back(p.at);
   }
   if (run.size() >= 2) runs.push_back(std::move(run));
+  // A ball that stood still has no trail to draw.
+  std::erase_if(runs, [](const std::vector<Vec2>& r) {
+    return std::all_of(r.begin(), r.end(), [&](Vec2 p) { return p == r.front(); });
+  });
   return runs;
 }
 

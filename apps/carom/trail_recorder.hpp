@@ -27,7 +27,7 @@ class TrailRecorder {
 
   // Each ball's path over the last `seconds` up to world time now, as runs of points: one run,
   // or several where a periodic world wrapped the ball around (each run then leaves the cell by
-  // the short way, for the picture's clip to cut). Balls without a path give no run.
+  // the short way, for the picture's clip to cut). A ball that has not moved gives no run.
   [[nodiscard]] std::vector<std::vector<Vec2>> paths(std::size_t ball, double now) const;
   [[nodiscard]] std::size_t ball_count() const { return points_.size(); }
 

@@ -11,8 +11,11 @@ SHELL := /bin/bash
 PACKAGES := cmake ninja-build g++ clang clang-format clang-tidy \
             libgtest-dev libgmock-dev libbenchmark-dev \
             nlohmann-json3-dev libcli11-dev libfmt-dev libbox2d-dev
+# carom render: Cairo draws the pictures and frames (found with pkg-config); ffmpeg encodes.
+PACKAGES += libcairo2-dev pkg-config ffmpeg
 
 RUN_PICTURE := build/two-moving-balls.svg
+RUN_ANIMATION := build/billiards-break.gif
 CAROM := build/release/apps/carom/carom
 
 .PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
@@ -40,6 +43,8 @@ run: deps
 	$(CAROM) sweep --a 0,0,1 --va 6,2 --b 8,3,1.5 --vb -4,-1 --svg $(RUN_PICTURE)
 	echo
 	echo "The picture of this case is in $(RUN_PICTURE) (open it in a browser)."
+	$(CAROM) render examples/billiards.json --animate $(RUN_ANIMATION) --until 2.5 --trails 0.25
+	echo "The billiards break, animated, is in $(RUN_ANIMATION) (open it in a browser)."
 
 test: deps test-dev test-clang test-asan format-check lint
 	echo "make test: all checks passed"

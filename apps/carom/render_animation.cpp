@@ -13,9 +13,6 @@
 namespace carom::cli {
 namespace {
 
-// Velocity arrows: the fastest ball's arrow is this share of the view's longer side.
-constexpr double kArrowShare = 0.1;
-
 double frame_time(double until, long long frames, long long k) {
   return until * (static_cast<double>(k) / static_cast<double>(frames - 1));
 }
@@ -55,8 +52,7 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
   style.view = picture_view(scene, seen.balls_seen);
   style.title = request.title;
   if (request.arrows) {
-    style.arrow_seconds =
-        kArrowShare * std::max(style.view.width(), style.view.height()) / style.top_speed;
+    style.arrow_seconds = arrow_seconds(style.view, style.top_speed);
   }
   const ImageLayout layout =
       layout_image(style.view, request.width, request.mode == ColourMode::speed, true);

@@ -35,8 +35,6 @@ constexpr int kAnimationWidth = 640;  // smaller: a GIF grows with every pixel o
 // 108000): refused before a long run.
 constexpr long long kMostFrames = 200'000;
 constexpr double kMostFps = 240.0;
-// Velocity arrows: the fastest ball's arrow is this share of the view's longer side.
-constexpr double kArrowShare = 0.1;
 
 // The options as typed; every value is parsed here so one set of rules and messages covers all.
 struct RenderOptions {
@@ -222,8 +220,7 @@ void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequ
   style.view = picture_view(scene, balls_box(scene_world));
   style.title = std::filesystem::path(o.scene).filename().string();
   if (o.arrows) {
-    style.arrow_seconds =
-        kArrowShare * std::max(style.view.width(), style.view.height()) / style.top_speed;
+    style.arrow_seconds = arrow_seconds(style.view, style.top_speed);
   }
   if (trails) style.trails = &*trails;
   const ScenePicture picture = draw_scene(scene_world, style);

@@ -95,6 +95,11 @@ ViewBox balls_box(const SceneWorld& scene_world) {
   return box;
 }
 
+double arrow_seconds(const ViewBox& view, double top_speed) {
+  constexpr double kArrowShare = 0.1;
+  return kArrowShare * std::max(view.width(), view.height()) / top_speed;
+}
+
 ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style) {
   const Scene& scene = scene_world.scene;
   ScenePicture picture;

@@ -80,6 +80,10 @@ struct PictureStyle {
 // The box around every live ball now.
 [[nodiscard]] ViewBox balls_box(const SceneWorld& scene_world);
 
+// How long ahead the velocity arrows reach: the fastest ball's arrow (at top_speed > 0) is a
+// tenth of the view's longer side, long enough to read, short enough not to cross the picture.
+[[nodiscard]] double arrow_seconds(const ViewBox& view, double top_speed);
+
 // The scene as it is now.
 [[nodiscard]] ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style);
 

@@ -40,10 +40,11 @@ std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, const std::
   if (format == VideoFormat::gif) {
     // One palette for the whole animation, made from every frame, then dithered lightly: the
     // way to a GIF without banding or flicker (ffmpeg's palettegen/paletteuse documentation).
-    args.insert(args.end(), {"-filter_complex",
-                             "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];"
-                             "[b][p]paletteuse=dither=sierra2_4a",
-                             "-loop", "0", "-f", "gif"});
+    args.insert(
+        args.end(),
+        {"-filter_complex",
+         "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=sierra2_4a",
+         "-loop", "0", "-f", "gif"});
   } else {
     // yuv420p and the index at the front (faststart): what browsers play, and start playing
     // before the whole file has arrived.

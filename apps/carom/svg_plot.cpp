@@ -70,9 +70,10 @@ std::vector<double> round_ticks(double low, double high, int count) {
   // A hair of slack at both ends, so that rounding in low / step does not drop an end tick.
   constexpr double kSlack = 1e-9;
   std::vector<double> ticks;
-  const double last = std::floor(high / step + kSlack);
-  for (double k = std::ceil(low / step - kSlack); k <= last; k += 1.0) {
-    ticks.push_back(k == 0.0 ? 0.0 : k * step);
+  const auto first = static_cast<long long>(std::ceil(low / step - kSlack));
+  const auto last = static_cast<long long>(std::floor(high / step + kSlack));
+  for (long long k = first; k <= last; ++k) {
+    ticks.push_back(k == 0 ? 0.0 : static_cast<double>(k) * step);
   }
   return ticks;
 }

@@ -71,7 +71,7 @@ TEST(RenderAnimation, SameRunGivesTheSameBytes) {
   EXPECT_EQ(read_file(dir / "a.gif"), read_file(dir / "b.gif"));
 }
 
-// PATH pointing at an empty folder hides ffmpeg from the tool for one run.
+// PATH pointing at another folder (an empty one, or one with a stand-in) for one run.
 class PathWithoutFfmpeg {
  public:
   explicit PathWithoutFfmpeg(const std::filesystem::path& empty_dir) {
@@ -108,6 +108,27 @@ TEST(RenderAnimation, MissingFfmpegIsAUsageErrorBeforeAnyWork) {
   EXPECT_THAT(run.err, HasSubstr("ffmpeg"));
   EXPECT_FALSE(std::filesystem::exists(dir / "two.gif"));
   EXPECT_FALSE(std::filesystem::exists(dir / "two.gif.tmp"));
+}
+
+TEST(RenderAnimation, FfmpegFailingIsReportedWithItsMessageAndLeavesNoFile) {
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  // A stand-in ffmpeg that refuses at once, as a real one does when an encoder is missing.
+  std::filesystem::create_directory(dir / "bin");
+  write_scene(dir, "bin/ffmpeg", "#!/bin/sh\necho 'Unknown encoder libx264' >&2\nexit 1\n");
+  std::filesystem::permissions(dir / "bin" / "ffmpeg", std::filesystem::perms::owner_all);
+  ToolRun run;
+  {
+    const PathWithoutFfmpeg stand_in(dir / "bin");
+    run = run_carom({"render", scene, "--animate", (dir / "two.mp4").string(), "--until", "1"});
+  }
+  EXPECT_EQ(run.exit_code, 1);  // not the caller's input: the tool it relies on failed
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(count_of(run.err, "\n"), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("ffmpeg"));
+  EXPECT_THAT(run.err, HasSubstr("Unknown encoder libx264"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "two.mp4"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "two.mp4.tmp"));
 }
 
 }  // namespace

@@ -89,35 +89,38 @@ RenderRequest parse(const RenderOptions& o) {
                      "(.gif, .mp4), or --plot KIND with --out FILE.svg");
   }
   if (!o.plot.empty()) {
-    if (o.plot == "energy")
+    if (o.plot == "energy") {
       r.plot = PlotKind::energy;
-    else if (o.plot == "momentum")
+    } else if (o.plot == "momentum") {
       r.plot = PlotKind::momentum;
-    else if (o.plot == "rate")
+    } else if (o.plot == "rate") {
       r.plot = PlotKind::rate;
-    else
+    } else {
       throw UsageError("--plot", o.plot, "is not a plot; the plots are energy, momentum, rate");
+    }
     if (o.out.empty()) throw UsageError("--plot", o.plot, "needs --out FILE.svg to write to");
     if (extension_of(o.out) != ".svg") {
       throw UsageError("--out", o.out, "a plot is written as SVG: the file name must end in .svg");
     }
   } else if (!o.out.empty()) {
     const std::string ext = extension_of(o.out);
-    if (ext == ".svg")
+    if (ext == ".svg") {
       r.picture = PictureFormat::svg;
-    else if (ext == ".png")
+    } else if (ext == ".png") {
       r.picture = PictureFormat::png;
-    else
+    } else {
       throw UsageError("--out", o.out, "the file name must end in .svg or .png");
+    }
   }
   if (!o.animate.empty()) {
     const std::string ext = extension_of(o.animate);
-    if (ext == ".gif")
+    if (ext == ".gif") {
       r.animation = VideoFormat::gif;
-    else if (ext == ".mp4")
+    } else if (ext == ".mp4") {
       r.animation = VideoFormat::mp4;
-    else
+    } else {
       throw UsageError("--animate", o.animate, "the file name must end in .gif or .mp4");
+    }
   }
 
   r.at = parse_time("--at", o.at, "a time T >= 0 after the scene's start");
@@ -141,11 +144,11 @@ RenderRequest parse(const RenderOptions& o) {
                     std::to_string(kMostFrames));
   }
 
-  if (o.color == "speed")
+  if (o.color == "speed") {
     r.mode = ColourMode::speed;
-  else if (o.color == "name")
+  } else if (o.color == "name") {
     r.mode = ColourMode::name;
-  else if (o.color != "auto") {
+  } else if (o.color != "auto") {
     throw UsageError("--color", o.color, "is not a colouring; use speed, name or auto");
   }
   if (!o.trails.empty()) {

@@ -21,6 +21,9 @@ constexpr Rgb kWallColour = rgb_from_hex(0x202020);
 constexpr Rgb kCellColour = rgb_from_hex(0x808080);
 constexpr Rgb kPocketColour = rgb_from_hex(0x303030);
 constexpr Rgb kArrowColour = rgb_from_hex(0xc00000);
+// The top of the speed scale is the speed 99 % of the balls do not exceed, so that one fast ball
+// does not squeeze everyone else into the dark end; faster balls take the top colour.
+constexpr double kTopSpeedShare = 0.99;
 
 std::vector<Vec2> box_outline(Vec2 lower, Vec2 upper) {
   return {lower, {upper.x, lower.y}, upper, {lower.x, upper.y}, lower};
@@ -76,14 +79,20 @@ ViewBox picture_view(const Scene& scene, const ViewBox& balls_seen) {
 }
 
 double top_speed(const SceneWorld& scene_world) {
-  double top = 0.0;
+  std::vector<double> speeds;
   for (std::size_t i = 0; i < scene_world.balls.size(); ++i) {
     const BallId id = scene_world.balls[i];
     if (id.is_null() || !scene_world.world.contains(id)) continue;
     if (is_immovable(scene_world.scene.balls[i])) continue;
-    top = std::max(top, length(scene_world.world.velocity(id)));
+    speeds.push_back(length(scene_world.world.velocity(id)));
   }
-  return top;
+  if (speeds.empty()) return 0.0;
+  // The nearest-rank percentile: with fewer than 1 / (1 - kTopSpeedShare) balls, the fastest.
+  const auto rank =
+      static_cast<std::size_t>(std::ceil(kTopSpeedShare * static_cast<double>(speeds.size())));
+  const auto top = speeds.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(rank, 1) - 1);
+  std::nth_element(speeds.begin(), top, speeds.end());
+  return *top;
 }
 
 ViewBox balls_box(const SceneWorld& scene_world) {

@@ -75,7 +75,8 @@ struct PictureStyle {
 // `balls_seen` (wherever they were in the frames), with a margin.
 [[nodiscard]] ViewBox picture_view(const Scene& scene, const ViewBox& balls_seen);
 
-// The fastest movable ball's speed now (0 when none moves).
+// The top of the speed scale now: the 99th percentile of the movable balls' speeds (the
+// fastest ball's speed when there are fewer than 100), 0 when none moves.
 [[nodiscard]] double top_speed(const SceneWorld& scene_world);
 // The box around every live ball now.
 [[nodiscard]] ViewBox balls_box(const SceneWorld& scene_world);

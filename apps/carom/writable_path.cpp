@@ -8,7 +8,7 @@
 
 namespace carom::cli {
 
-std::optional<std::string> check_writable(const std::string& path) {
+std::optional<std::string> check_output_path(const std::string& path) {
   if (path.empty()) return "the file name is empty";
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) return path + " is a folder";

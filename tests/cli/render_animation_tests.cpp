@@ -26,7 +26,7 @@ unsigned le16(const std::string& bytes, std::size_t offset) {
 TEST(RenderAnimation, GifHasTheFrameSizeAndOneFramePerStep) {
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   const ToolRun run = run_carom({"render", scene, "--animate", (dir / "two.gif").string(),
                                  "--until", "1", "--fps", "10", "--width", "320"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -44,7 +44,7 @@ TEST(RenderAnimation, GifHasTheFrameSizeAndOneFramePerStep) {
 TEST(RenderAnimation, Mp4IsAnIsoMediaFileWithEvenSides) {
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   // An odd width is rounded up to even: H.264 in yuv420p needs even sides.
   const ToolRun run =
       run_carom({"render", scene, "--animate", (dir / "two.mp4").string(), "--until", "0.5",
@@ -61,7 +61,7 @@ TEST(RenderAnimation, Mp4IsAnIsoMediaFileWithEvenSides) {
 TEST(RenderAnimation, SameRunGivesTheSameBytes) {
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   for (const char* name : {"a.gif", "b.gif"}) {
     ASSERT_EQ(run_carom({"render", scene, "--animate", (dir / name).string(), "--until", "0.5",
                          "--fps", "10", "--width", "200"})
@@ -94,7 +94,7 @@ class PathWithoutFfmpeg {
 
 TEST(RenderAnimation, MissingFfmpegIsAUsageErrorBeforeAnyWork) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   std::filesystem::create_directory(dir / "empty");
   ToolRun run;
   {
@@ -112,10 +112,10 @@ TEST(RenderAnimation, MissingFfmpegIsAUsageErrorBeforeAnyWork) {
 
 TEST(RenderAnimation, FfmpegFailingIsReportedWithItsMessageAndLeavesNoFile) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   // A stand-in ffmpeg that refuses at once, as a real one does when an encoder is missing.
   std::filesystem::create_directory(dir / "bin");
-  write_scene(dir, "bin/ffmpeg", "#!/bin/sh\necho 'Unknown encoder libx264' >&2\nexit 1\n");
+  write_test_scene(dir, "bin/ffmpeg", "#!/bin/sh\necho 'Unknown encoder libx264' >&2\nexit 1\n");
   std::filesystem::permissions(dir / "bin" / "ffmpeg", std::filesystem::perms::owner_all);
   ToolRun run;
   {

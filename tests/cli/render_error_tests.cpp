@@ -26,7 +26,7 @@ class RenderBadInput : public ::testing::TestWithParam<BadRender> {};
 
 TEST_P(RenderBadInput, OneMessageStatusTwoAndNoFile) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "scene.json", GetParam().scene);
+  const std::string scene = write_test_scene(dir, "scene.json", GetParam().scene);
   std::vector<std::string> args{"render", scene};
   for (const std::string& arg : GetParam().args) {
     args.push_back(arg.rfind("OUT", 0) == 0 ? (dir / ("out" + arg.substr(3))).string() : arg);
@@ -124,7 +124,7 @@ TEST(RenderErrors, UnwritableOutputIsReportedBeforeTheSceneIsRead) {
 
 TEST(RenderErrors, AFolderInTheWayIsNamed) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   std::filesystem::create_directory(dir / "x.svg");
   const ToolRun run = run_carom({"render", scene, "--out", (dir / "x.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
@@ -134,8 +134,8 @@ TEST(RenderErrors, AFolderInTheWayIsNamed) {
 
 TEST(RenderErrors, AFailedRenderKeepsTheOldFile) {
   const ScratchDir dir;
-  const std::string good = write_scene(dir, "good.json", kTwoBallsScene);
-  const std::string bad = write_scene(dir, "bad.json", kBadColourScene);
+  const std::string good = write_test_scene(dir, "good.json", kTwoBallsScene);
+  const std::string bad = write_test_scene(dir, "bad.json", kBadColourScene);
   const std::string out = (dir / "x.svg").string();
   ASSERT_EQ(run_carom({"render", good, "--out", out}).exit_code, 0);
   const std::string before = read_file(out);

@@ -25,7 +25,7 @@ int polyline_points(const std::string& svg, std::size_t after = 0) {
 
 TEST(RenderPlot, EnergyOfAnElasticBoxIsFlatAtEverySample) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "every.json", kEveryKindScene);
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run = run_carom({"render", scene, "--plot", "energy", "--until", "20", "--out",
                                  (dir / "energy.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -42,7 +42,7 @@ TEST(RenderPlot, EnergyOfAnElasticBoxIsFlatAtEverySample) {
 
 TEST(RenderPlot, RateCountsTheOneContactOfTheTwoBalls) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   const ToolRun run = run_carom(
       {"render", scene, "--plot", "rate", "--until", "1", "--out", (dir / "rate.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -55,7 +55,7 @@ TEST(RenderPlot, RateCountsTheOneContactOfTheTwoBalls) {
 
 TEST(RenderPlot, MomentumOfAnOpenWorldIsKept) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "two.json", kTwoBallsScene);
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   const ToolRun run = run_carom(
       {"render", scene, "--plot", "momentum", "--until", "2", "--out", (dir / "p.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;

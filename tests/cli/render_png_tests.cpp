@@ -49,7 +49,7 @@ Vec2 pixel_of(const ImageLayout& layout, const ViewBox& view, Vec2 p) {
 
 TEST(RenderPng, SignatureSizeAndTheBallsColourAtItsCentre) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "one.json", kOneBallScene);
+  const std::string scene = write_test_scene(dir, "one.json", kOneBallScene);
   const ToolRun run =
       run_carom({"render", scene, "--width", "400", "--out", (dir / "one.png").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -80,7 +80,7 @@ TEST(RenderPng, SignatureSizeAndTheBallsColourAtItsCentre) {
 
 TEST(RenderPng, BySpeedARestingBallHasTheScalesBottomColour) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "one.json", kOneBallScene);
+  const std::string scene = write_test_scene(dir, "one.json", kOneBallScene);
   const ToolRun run = run_carom(
       {"render", scene, "--color", "speed", "--width", "400", "--out", (dir / "one.png").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -96,7 +96,7 @@ TEST(RenderPng, BySpeedARestingBallHasTheScalesBottomColour) {
 TEST(RenderPng, AMovedBallIsDrawnWhereItIsAtTheAskedTime) {
   const ScratchDir dir;
   // The ball moves right at 1 length unit per time unit: at t = 2 its centre is at (7, 5).
-  const std::string scene = write_scene(dir, "moving.json", R"({
+  const std::string scene = write_test_scene(dir, "moving.json", R"({
     "carom_scene": 1,
     "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10]},
     "balls": [{"position": [5, 5], "velocity": [1, 0], "radius": 1.5, "color": "#c03030"}]

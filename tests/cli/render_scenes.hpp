@@ -46,8 +46,8 @@ inline constexpr const char* kTwoBallsScene = R"({
 )";
 
 // Writes text to dir/name and returns the path as a string for the command line.
-inline std::string write_scene(const ScratchDir& dir, const std::string& name,
-                               const std::string& text) {
+inline std::string write_test_scene(const ScratchDir& dir, const std::string& name,
+                                    const std::string& text) {
   const std::filesystem::path path = dir / name;
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (file != nullptr) {

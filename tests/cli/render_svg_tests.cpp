@@ -13,7 +13,7 @@ using ::testing::StartsWith;
 
 TEST(RenderSvg, OneElementPerBallPocketAndWall) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "every.json", kEveryKindScene);
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run =
       run_carom({"render", scene, "--color", "name", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -37,7 +37,7 @@ TEST(RenderSvg, OneElementPerBallPocketAndWall) {
 
 TEST(RenderSvg, ArrowsForMovingBallsOnlyAndALegendEntry) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "every.json", kEveryKindScene);
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run = run_carom(
       {"render", scene, "--color", "name", "--arrows", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -50,7 +50,7 @@ TEST(RenderSvg, ArrowsForMovingBallsOnlyAndALegendEntry) {
 
 TEST(RenderSvg, SpeedModeAddsAScaleLegend) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "every.json", kEveryKindScene);
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run =
       run_carom({"render", scene, "--color", "speed", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -67,7 +67,7 @@ TEST(RenderSvg, SpeedModeAddsAScaleLegend) {
 
 TEST(RenderSvg, TrailsFollowTheBallsPath) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "every.json", kEveryKindScene);
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run = run_carom({"render", scene, "--color", "name", "--at", "1", "--trails", "0.5",
                                  "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -27,8 +27,8 @@ TEST(RenderAnimation, GifHasTheFrameSizeAndOneFramePerStep) {
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
-  const ToolRun run = run_carom({"render", scene, "--animate", (dir / "two.gif").string(),
-                                 "--until", "1", "--fps", "10", "--width", "320"});
+  const ToolRun run = run_render({"render", scene, "--animate", (dir / "two.gif").string(),
+                                  "--until", "1", "--fps", "10", "--width", "320"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("11 frames"));
   const std::string gif = read_file(dir / "two.gif");
@@ -47,8 +47,8 @@ TEST(RenderAnimation, Mp4IsAnIsoMediaFileWithEvenSides) {
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   // An odd width is rounded up to even: H.264 in yuv420p needs even sides.
   const ToolRun run =
-      run_carom({"render", scene, "--animate", (dir / "two.mp4").string(), "--until", "0.5",
-                 "--fps", "20", "--width", "321", "--arrows", "--trails", "0.2"});
+      run_render({"render", scene, "--animate", (dir / "two.mp4").string(), "--until", "0.5",
+                  "--fps", "20", "--width", "321", "--arrows", "--trails", "0.2"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("11 frames, 322x"));
   const std::string mp4 = read_file(dir / "two.mp4");
@@ -63,8 +63,8 @@ TEST(RenderAnimation, SameRunGivesTheSameBytes) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   for (const char* name : {"a.gif", "b.gif"}) {
-    ASSERT_EQ(run_carom({"render", scene, "--animate", (dir / name).string(), "--until", "0.5",
-                         "--fps", "10", "--width", "200"})
+    ASSERT_EQ(run_render({"render", scene, "--animate", (dir / name).string(), "--until", "0.5",
+                          "--fps", "10", "--width", "200"})
                   .exit_code,
               0);
   }
@@ -99,7 +99,7 @@ TEST(RenderAnimation, MissingFfmpegIsAUsageErrorBeforeAnyWork) {
   ToolRun run;
   {
     const PathWithoutFfmpeg hidden(dir / "empty");
-    run = run_carom({"render", scene, "--animate", (dir / "two.gif").string(), "--until", "1"});
+    run = run_render({"render", scene, "--animate", (dir / "two.gif").string(), "--until", "1"});
   }
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.out, "");
@@ -120,7 +120,7 @@ TEST(RenderAnimation, FfmpegFailingIsReportedWithItsMessageAndLeavesNoFile) {
   ToolRun run;
   {
     const PathWithoutFfmpeg stand_in(dir / "bin");
-    run = run_carom({"render", scene, "--animate", (dir / "two.mp4").string(), "--until", "1"});
+    run = run_render({"render", scene, "--animate", (dir / "two.mp4").string(), "--until", "1"});
   }
   EXPECT_EQ(run.exit_code, 1);  // not the caller's input: the tool it relies on failed
   EXPECT_EQ(run.out, "");

@@ -31,7 +31,7 @@ TEST_P(RenderBadInput, OneMessageStatusTwoAndNoFile) {
   for (const std::string& arg : GetParam().args) {
     args.push_back(arg.rfind("OUT", 0) == 0 ? (dir / ("out" + arg.substr(3))).string() : arg);
   }
-  const ToolRun run = run_carom(args);
+  const ToolRun run = run_render(args);
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.out, "");
   EXPECT_EQ(count_of(run.err, "\n"), 1) << run.err;
@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(RenderErrors, MissingSceneFileIsNamed) {
   const ScratchDir dir;
   const ToolRun run =
-      run_carom({"render", (dir / "no-such.json").string(), "--out", (dir / "x.svg").string()});
+      run_render({"render", (dir / "no-such.json").string(), "--out", (dir / "x.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.out, "");
   EXPECT_EQ(count_of(run.err, "\n"), 1) << run.err;
@@ -116,7 +116,7 @@ TEST(RenderErrors, UnwritableOutputIsReportedBeforeTheSceneIsRead) {
   const ScratchDir dir;
   // The scene is missing too; the output is checked first, so it is what the message is about.
   const ToolRun run =
-      run_carom({"render", (dir / "no-such.json").string(), "--out", "/nonexistent-dir/x.svg"});
+      run_render({"render", (dir / "no-such.json").string(), "--out", "/nonexistent-dir/x.svg"});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("/nonexistent-dir/x.svg"));
   EXPECT_THAT(run.err, ::testing::Not(HasSubstr("no-such.json")));
@@ -126,7 +126,7 @@ TEST(RenderErrors, AFolderInTheWayIsNamed) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
   std::filesystem::create_directory(dir / "x.svg");
-  const ToolRun run = run_carom({"render", scene, "--out", (dir / "x.svg").string()});
+  const ToolRun run = run_render({"render", scene, "--out", (dir / "x.svg").string()});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("is a folder"));
   EXPECT_TRUE(std::filesystem::is_directory(dir / "x.svg"));
@@ -137,9 +137,9 @@ TEST(RenderErrors, AFailedRenderKeepsTheOldFile) {
   const std::string good = write_test_scene(dir, "good.json", kTwoBallsScene);
   const std::string bad = write_test_scene(dir, "bad.json", kBadColourScene);
   const std::string out = (dir / "x.svg").string();
-  ASSERT_EQ(run_carom({"render", good, "--out", out}).exit_code, 0);
+  ASSERT_EQ(run_render({"render", good, "--out", out}).exit_code, 0);
   const std::string before = read_file(out);
-  EXPECT_EQ(run_carom({"render", bad, "--out", out}).exit_code, 2);
+  EXPECT_EQ(run_render({"render", bad, "--out", out}).exit_code, 2);
   EXPECT_EQ(read_file(out), before);
 }
 

@@ -26,8 +26,8 @@ int polyline_points(const std::string& svg, std::size_t after = 0) {
 TEST(RenderPlot, EnergyOfAnElasticBoxIsFlatAtEverySample) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
-  const ToolRun run = run_carom({"render", scene, "--plot", "energy", "--until", "20", "--out",
-                                 (dir / "energy.svg").string()});
+  const ToolRun run = run_render({"render", scene, "--plot", "energy", "--until", "20", "--out",
+                                  (dir / "energy.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("energy.svg"));
   const std::string svg = read_file(dir / "energy.svg");
@@ -43,7 +43,7 @@ TEST(RenderPlot, EnergyOfAnElasticBoxIsFlatAtEverySample) {
 TEST(RenderPlot, RateCountsTheOneContactOfTheTwoBalls) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
-  const ToolRun run = run_carom(
+  const ToolRun run = run_render(
       {"render", scene, "--plot", "rate", "--until", "1", "--out", (dir / "rate.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = read_file(dir / "rate.svg");
@@ -56,7 +56,7 @@ TEST(RenderPlot, RateCountsTheOneContactOfTheTwoBalls) {
 TEST(RenderPlot, MomentumOfAnOpenWorldIsKept) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
-  const ToolRun run = run_carom(
+  const ToolRun run = run_render(
       {"render", scene, "--plot", "momentum", "--until", "2", "--out", (dir / "p.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = read_file(dir / "p.svg");

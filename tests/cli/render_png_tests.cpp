@@ -51,7 +51,7 @@ TEST(RenderPng, SignatureSizeAndTheBallsColourAtItsCentre) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "one.json", kOneBallScene);
   const ToolRun run =
-      run_carom({"render", scene, "--width", "400", "--out", (dir / "one.png").string()});
+      run_render({"render", scene, "--width", "400", "--out", (dir / "one.png").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
 
   const std::string bytes = read_file(dir / "one.png");
@@ -81,7 +81,7 @@ TEST(RenderPng, SignatureSizeAndTheBallsColourAtItsCentre) {
 TEST(RenderPng, BySpeedARestingBallHasTheScalesBottomColour) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "one.json", kOneBallScene);
-  const ToolRun run = run_carom(
+  const ToolRun run = run_render(
       {"render", scene, "--color", "speed", "--width", "400", "--out", (dir / "one.png").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Surface png = read_png(dir / "one.png");
@@ -101,8 +101,8 @@ TEST(RenderPng, AMovedBallIsDrawnWhereItIsAtTheAskedTime) {
     "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10]},
     "balls": [{"position": [5, 5], "velocity": [1, 0], "radius": 1.5, "color": "#c03030"}]
   })");
-  const ToolRun run = run_carom({"render", scene, "--at", "2", "--color", "name", "--width", "400",
-                                 "--out", (dir / "moving.png").string()});
+  const ToolRun run = run_render({"render", scene, "--at", "2", "--color", "name", "--width", "400",
+                                  "--out", (dir / "moving.png").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Surface png = read_png(dir / "moving.png");
   ASSERT_EQ(cairo_surface_status(png.get()), CAIRO_STATUS_SUCCESS);

@@ -15,7 +15,7 @@ TEST(RenderSvg, OneElementPerBallPocketAndWall) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run =
-      run_carom({"render", scene, "--color", "name", "--out", (dir / "every.svg").string()});
+      run_render({"render", scene, "--color", "name", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("every.svg"));
   const std::string svg = read_file(dir / "every.svg");
@@ -38,7 +38,7 @@ TEST(RenderSvg, OneElementPerBallPocketAndWall) {
 TEST(RenderSvg, ArrowsForMovingBallsOnlyAndALegendEntry) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
-  const ToolRun run = run_carom(
+  const ToolRun run = run_render(
       {"render", scene, "--color", "name", "--arrows", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = read_file(dir / "every.svg");
@@ -52,7 +52,7 @@ TEST(RenderSvg, SpeedModeAddsAScaleLegend) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
   const ToolRun run =
-      run_carom({"render", scene, "--color", "speed", "--out", (dir / "every.svg").string()});
+      run_render({"render", scene, "--color", "speed", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = read_file(dir / "every.svg");
   // 4 discs in the picture and 5 on the scale.
@@ -68,8 +68,8 @@ TEST(RenderSvg, SpeedModeAddsAScaleLegend) {
 TEST(RenderSvg, TrailsFollowTheBallsPath) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
-  const ToolRun run = run_carom({"render", scene, "--color", "name", "--at", "1", "--trails", "0.5",
-                                 "--out", (dir / "every.svg").string()});
+  const ToolRun run = run_render({"render", scene, "--color", "name", "--at", "1", "--trails",
+                                  "0.5", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = read_file(dir / "every.svg");
   // The polyline and arc, and one trail for each of the two moving balls.

@@ -13,9 +13,12 @@ SHELL := /bin/bash
 PACKAGES := cmake ninja-build g++ clang clang-format clang-tidy \
             libgtest-dev libgmock-dev libbenchmark-dev \
             nlohmann-json3-dev libcli11-dev libfmt-dev libbox2d-dev libclang-rt-14-dev
+# carom render: Cairo draws the pictures and frames (found with pkg-config); ffmpeg encodes.
+PACKAGES += libcairo2-dev pkg-config ffmpeg
 
 RUN_PICTURE := build/two-moving-balls.svg
 RUN_DIR := build/run
+RUN_ANIMATION := $(RUN_DIR)/billiards-break.gif
 CAROM := build/release/apps/carom/carom
 # The scene loader's libFuzzer target: a bounded run in make test, a longer one in make fuzz.
 FUZZER := build/fuzz/tests/fuzz/carom_scene_fuzz
@@ -56,6 +59,8 @@ run: deps
 	echo "  every contact, as JSON lines:                $(RUN_DIR)/billiards-events.jsonl"
 	echo "  the end state, a scene to continue from:     $(RUN_DIR)/billiards-end.json"
 	echo "The tutorial's two balls, drawn:               $(RUN_PICTURE) (open it in a browser)"
+	$(CAROM) render examples/billiards.json --animate $(RUN_ANIMATION) --until 2.5 --trails 0.25
+	echo "The billiards break, animated:               $(RUN_ANIMATION) (open it in a browser)"
 	echo "More scenes in examples/; try: $(CAROM) run examples/periodic-gas.json --until 1 --stats"
 
 # The browser tests need chromium (and emscripten, node-acorn, npm); .ci/run installs them.

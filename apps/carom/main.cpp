@@ -15,6 +15,7 @@
 #include "exit_codes.hpp"
 #include "gas_command.hpp"
 #include "info_command.hpp"
+#include "render_command.hpp"
 #include "run_command.hpp"
 #include "sweep_command.hpp"
 #include "usage_error.hpp"
@@ -70,7 +71,8 @@ int run_tool(int argc, char** argv) {
   const std::vector<carom::cli::Command> commands{
       carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
       carom::cli::add_gas_command(app), carom::cli::add_eos_command(app),
-      carom::cli::add_run_command(app), carom::cli::add_info_command(app)};
+      carom::cli::add_run_command(app), carom::cli::add_info_command(app),
+      carom::cli::add_render_command(app)};
 
   try {
     app.parse(argc, argv);

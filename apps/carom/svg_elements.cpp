@@ -88,6 +88,17 @@ void svg_line(std::string& out, Vec2 from, Vec2 to, const Pen& pen) {
   out += '\n';
 }
 
+void svg_polyline(std::string& out, std::span<const Vec2> points, const Pen& pen) {
+  std::string coordinates;
+  for (const Vec2 p : points) {
+    if (!coordinates.empty()) coordinates += ' ';
+    coordinates += svg_number(p.x) + "," + svg_number(p.y);
+  }
+  out += fmt::format(R"(<polyline points="{}" fill="none" stroke-linejoin="round" {}/>)",
+                     coordinates, stroke_attributes(pen));
+  out += '\n';
+}
+
 // The head is a filled triangle drawn here rather than an SVG marker: a marker cannot take the
 // line's colour in SVG 1.1, and the line's end would poke out beside the marker's tip.
 void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen) {

@@ -2,6 +2,7 @@
 // SvgFigure. Sizes here are the figure's fixed proportions; see svg_elements.cpp.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -28,6 +29,8 @@ enum class TextAnchor { kStart, kMiddle, kEnd };
 void svg_circle(std::string& out, Vec2 center, double radius, const Pen& pen,
                 std::string_view fill);
 void svg_line(std::string& out, Vec2 from, Vec2 to, const Pen& pen);
+// Lines joining consecutive points, as one <polyline> element.
+void svg_polyline(std::string& out, std::span<const Vec2> points, const Pen& pen);
 // A line with a head at `to`; nothing for a zero-length arrow.
 void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen);
 // A small filled dot: a point, not a ball.

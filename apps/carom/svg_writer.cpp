@@ -98,6 +98,12 @@ void SvgFigure::line(Vec2 from, Vec2 to, const Pen& pen) {
   current_panel().shapes.emplace_back(Line{from, to, pen, false});
 }
 
+void SvgFigure::polyline(std::vector<Vec2> points, const Pen& pen) {
+  std::erase_if(points, [](Vec2 p) { return !is_finite(p); });
+  if (points.size() < 2) return;
+  current_panel().shapes.emplace_back(Polyline{std::move(points), pen});
+}
+
 void SvgFigure::arrow(Vec2 from, Vec2 to, const Pen& pen) {
   if (from == to || !is_finite(from) || !is_finite(to)) return;
   current_panel().shapes.emplace_back(Line{from, to, pen, true});
@@ -142,6 +148,14 @@ void SvgFigure::render_panel(std::string& out, const Panel& panel, const Frame& 
     } else if (const auto* d = std::get_if<Dot>(&shape)) {
       svg_dot(out, frame(d->at), d->colour);
       obstacles.add_segment(frame(d->at), frame(d->at));
+    } else if (const auto* p = std::get_if<Polyline>(&shape)) {
+      std::vector<Vec2> on_screen;
+      on_screen.reserve(p->points.size());
+      for (const Vec2 point : p->points) on_screen.push_back(frame(point));
+      svg_polyline(out, on_screen, p->pen);
+      for (std::size_t k = 1; k < on_screen.size(); ++k) {
+        obstacles.add_segment(on_screen[k - 1], on_screen[k]);
+      }
     }
   }
   out += fmt::format(
@@ -226,6 +240,9 @@ std::vector<SvgFigure::Frame> SvgFigure::fit_panels() const {
         world.add(l->to);
       }
       if (const auto* d = std::get_if<Dot>(&shape)) world.add(d->at);
+      if (const auto* p = std::get_if<Polyline>(&shape)) {
+        for (const Vec2 point : p->points) world.add(point);
+      }
     }
     for (const Label& l : panels_[i].labels) world.add(l.spots.front().at);
     if (world.empty()) world.add(Vec2{});

@@ -37,6 +37,9 @@ class SvgFigure {
   // A circle filled with fill ("none" for an outline only), its outline drawn with pen.
   void circle(Vec2 center, double radius, const Pen& pen, std::string fill = "none");
   void line(Vec2 from, Vec2 to, const Pen& pen);
+  // Lines joining consecutive points (an arc drawn as chords, a trail); drawn as one element.
+  // Fewer than two finite points draw nothing.
+  void polyline(std::vector<Vec2> points, const Pen& pen);
   // A line with an arrow head at `to`. A zero-length arrow draws nothing.
   void arrow(Vec2 from, Vec2 to, const Pen& pen);
   // A small dot of fixed size: a point, not a ball.
@@ -72,7 +75,11 @@ class SvgFigure {
     Vec2 at;
     std::string colour;
   };
-  using Shape = std::variant<Circle, Line, Dot>;
+  struct Polyline {
+    std::vector<Vec2> points;
+    Pen pen;
+  };
+  using Shape = std::variant<Circle, Line, Dot, Polyline>;
   struct Label {
     std::vector<LabelSpot> spots;
     std::string text;

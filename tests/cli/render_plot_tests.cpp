@@ -1,0 +1,77 @@
+// `carom render SCENE --plot energy|momentum|rate --until T --out FILE.svg`.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "render_plot.hpp"
+#include "render_scenes.hpp"
+#include "run_tool.hpp"
+#include "svg_plot.hpp"
+
+namespace carom::cli::test {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::Pointwise;
+
+// The number of points in the first <polyline> after `after`.
+int polyline_points(const std::string& svg, std::size_t after = 0) {
+  const std::size_t start = svg.find("<polyline points=\"", after);
+  if (start == std::string::npos) return 0;
+  const std::size_t begin = start + 18;
+  const std::size_t end = svg.find('"', begin);
+  return count_of(svg.substr(begin, end - begin), " ") + 1;
+}
+
+TEST(RenderPlot, EnergyOfAnElasticBoxIsFlatAtEverySample) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
+  const ToolRun run = run_render({"render", scene, "--plot", "energy", "--until", "20", "--out",
+                                  (dir / "energy.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("energy.svg"));
+  const std::string svg = read_file(dir / "energy.svg");
+  EXPECT_THAT(svg, HasSubstr("Kinetic energy: every.json"));
+  EXPECT_THAT(svg, HasSubstr("energy (kg·m²/s²)"));
+  EXPECT_EQ(count_of(svg, "<polyline"), 1);
+  EXPECT_EQ(polyline_points(svg), kPlotSamples + 1);
+  // Elastic contacts in a box keep the energy to rounding; the plot says how close.
+  EXPECT_THAT(svg, HasSubstr("largest change |E(t) − E(0)| / E(0) = "));
+  EXPECT_THAT(svg, ::testing::Not(HasSubstr("potted")));
+}
+
+TEST(RenderPlot, RateCountsTheOneContactOfTheTwoBalls) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
+  const ToolRun run = run_render(
+      {"render", scene, "--plot", "rate", "--until", "1", "--out", (dir / "rate.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "rate.svg");
+  EXPECT_THAT(svg, HasSubstr("1 contact in 1 s"));
+  // Two step lines (ball–ball, ball–wall), each with two points per bin less one, plus the end.
+  EXPECT_EQ(count_of(svg, "<polyline"), 2);
+  EXPECT_EQ(polyline_points(svg), 2 * kRateBins + 1);
+}
+
+TEST(RenderPlot, MomentumOfAnOpenWorldIsKept) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
+  const ToolRun run = run_render(
+      {"render", scene, "--plot", "momentum", "--until", "2", "--out", (dir / "p.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "p.svg");
+  EXPECT_EQ(count_of(svg, "<polyline"), 3);  // x, y and the length
+  EXPECT_THAT(svg, HasSubstr("largest change |p(t) − p(0)| = "));
+}
+
+TEST(RoundTicks, OneTwoOrFiveTimesAPowerOfTen) {
+  // Ticks are k × step: equal to the decimal numbers up to one rounding.
+  const auto near = ::testing::DoubleNear(1e-15);
+  EXPECT_THAT(round_ticks(0.0, 2.0, 6), Pointwise(near, {0.0, 0.5, 1.0, 1.5, 2.0}));
+  EXPECT_THAT(round_ticks(0.0, 100.0, 6), Pointwise(near, {0.0, 20.0, 40.0, 60.0, 80.0, 100.0}));
+  EXPECT_THAT(round_ticks(-0.3, 0.3, 6), Pointwise(near, {-0.3, -0.2, -0.1, 0.0, 0.1, 0.2, 0.3}));
+  EXPECT_THAT(round_ticks(3.0, 3.0, 6), ElementsAre(3.0));
+}
+
+}  // namespace
+}  // namespace carom::cli::test

@@ -34,7 +34,8 @@ try {
 }
 const sceneSelect = document.getElementById('scene');
 for (const source of sources) sceneSelect.add(new Option(source.label, source.id));
-if (params.has('scene')) sceneSelect.value = params.get('scene');
+// ?scene=ID opens that source (e.g. example:billiards.json); an unknown ID is ignored.
+if (sources.some((s) => s.id === params.get('scene'))) sceneSelect.value = params.get('scene');
 
 const countInput = document.getElementById('count');
 if (params.has('n')) {

@@ -185,7 +185,9 @@ bool EventQueue::open_year() {
   const double mean_ahead = (*middle - earliest) / std::numbers::ln2;
   const double width = kEventsPerBucket * mean_ahead / static_cast<double>(count);
   const auto wanted = static_cast<std::uint64_t>(kBucketsPerEvent * static_cast<double>(count));
-  const std::size_t size = std::bit_ceil(std::max<std::uint64_t>(kMinBuckets, wanted));
+  // The cast is for 32-bit targets (the wasm build); a bucket per event or so always fits.
+  const auto size =
+      static_cast<std::size_t>(std::bit_ceil(std::max<std::uint64_t>(kMinBuckets, wanted)));
   buckets_.assign(size, kNone);
   origin_ = earliest;
   // Half the events or more at the earliest time (width 0): the year is that one instant, so

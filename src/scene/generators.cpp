@@ -118,7 +118,7 @@ std::vector<Vec2> lattice_positions(const SceneGenerator& g, std::size_t index,
   // last site (shifted by half) inside.
   const std::uint64_t sites = lattice.columns * lattice.rows;
   std::vector<Vec2> positions;
-  positions.reserve(g.count);
+  positions.reserve(static_cast<std::size_t>(g.count));
   for (std::uint64_t i = 0; i < g.count; ++i) {
     // Spread the n balls evenly over the sites when there are more sites than balls.
     const std::uint64_t site = static_cast<std::uint64_t>(
@@ -172,7 +172,7 @@ std::vector<Vec2> random_positions(const Scene& scene, const SceneGenerator& g, 
 
   std::mt19937_64 random(g.seed);
   std::vector<Vec2> positions;
-  positions.reserve(g.count);
+  positions.reserve(static_cast<std::size_t>(g.count));
   for (std::uint64_t placed = 0; placed < g.count; ++placed) {
     bool done = false;
     for (int attempt = 0; attempt < kRandomPlacementTries && !done; ++attempt) {
@@ -209,7 +209,7 @@ std::vector<Vec2> velocities(const SceneGenerator& g) {
   // A stream of its own, so changing the placement does not change the velocities.
   constexpr std::uint64_t kVelocityStream = 0x9E3779B97F4A7C15ULL;
   std::mt19937_64 random(g.seed ^ kVelocityStream);
-  std::vector<Vec2> v(g.count, spec.value);
+  std::vector<Vec2> v(static_cast<std::size_t>(g.count), spec.value);
   if (spec.distribution == VelocityDistribution::uniform_direction) {
     for (Vec2& velocity : v) {
       const double angle = 2.0 * std::numbers::pi * uniform(random);

@@ -35,7 +35,7 @@ void pot(SceneWorld& sw, std::vector<PottedBall>* potted) {
   if (!sw.world.contains(ball)) return;
   const std::uint64_t index = sw.world.user_data(ball);
   sw.world.remove_ball(ball);
-  if (index < sw.balls.size()) sw.balls[index] = BallId{};
+  if (index < sw.balls.size()) sw.balls[static_cast<std::size_t>(index)] = BallId{};
   if (potted != nullptr) {
     const auto k = static_cast<std::size_t>(
         std::find(sw.pockets.begin(), sw.pockets.end(), pocket) - sw.pockets.begin());

@@ -1,50 +1,97 @@
 #include "drawn_world.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <utility>
 
 #include "carom/error.hpp"
 
 namespace carom::web {
 
-DrawnWorld::DrawnWorld(const WorldDef& def) : def_(def), world_(def) {}
+namespace {
+
+WorldDef def_of(const SceneSettings& settings) {
+  return {.boundary = settings.boundary,
+          .lower = settings.lower,
+          .upper = settings.upper,
+          .restitution = settings.restitution,
+          .collapse_time = settings.collapse_time,
+          .cell_size = settings.cell_size};
+}
+
+}  // namespace
+
+DrawnWorld::DrawnWorld(const WorldDef& def)
+    : def_(def), scene_world_{World(def), {}, {}, {}, {}, 0.0} {}
+
+DrawnWorld::DrawnWorld(SceneWorld scene_world)
+    : def_(def_of(scene_world.scene.world)),
+      scene_world_(std::move(scene_world)),
+      pockets_(scene_world_.scene.pockets),
+      held_velocity_(scene_world_.balls.size()) {
+  const Scene& scene = scene_world_.scene;
+  segments_ = scene.segments;
+  // The same walls, in the same order, as carom::make_world adds them.
+  for (const ScenePolyline& polyline : scene.polylines) {
+    for (std::size_t i = 0; i + 1 < polyline.points.size(); ++i) {
+      segments_.push_back({polyline.points[i], polyline.points[i + 1]});
+    }
+    if (polyline.closed && polyline.points.size() > 2) {
+      segments_.push_back({polyline.points.back(), polyline.points.front()});
+    }
+  }
+  arcs_ = scene.arcs;
+  colors_.reserve(scene.balls.size());
+  for (const SceneBall& ball : scene.balls) colors_.push_back(ball.color.value_or(""));
+}
 
 int DrawnWorld::add_ball(Vec2 position, Vec2 velocity, double radius, double mass) {
-  ids_.push_back(world_.add_ball(
-      {.position = position, .velocity = velocity, .radius = radius, .mass = mass}));
+  std::vector<BallId>& ids = scene_world_.balls;
+  ids.push_back(scene_world_.world.add_ball({.position = position,
+                                             .velocity = velocity,
+                                             .radius = radius,
+                                             .mass = mass,
+                                             .user_data = ids.size()}));
   held_velocity_.emplace_back();
-  return static_cast<int>(ids_.size()) - 1;
+  colors_.emplace_back();
+  return static_cast<int>(ids.size()) - 1;
 }
 
 void DrawnWorld::add_segment(const Segment& segment) {
-  world_.add_segment(segment);
+  static_cast<void>(scene_world_.world.add_segment(segment));
   segments_.push_back(segment);
 }
 
 void DrawnWorld::add_arc(const Arc& arc) {
-  world_.add_arc(arc);
+  static_cast<void>(scene_world_.world.add_arc(arc));
   arcs_.push_back(arc);
 }
 
-double DrawnWorld::step(double dt) { return world_.step(dt); }
+double DrawnWorld::step(double dt) { return step_scene(scene_world_, dt); }
 
 void DrawnWorld::scale_speeds(double factor) {
   if (!(factor > 0.0) || factor == kImmovable) {
     throw InvalidArgument("DrawnWorld::scale_speeds", "factor", std::to_string(factor),
                           "must be a finite number > 0");
   }
-  for (std::size_t i = 0; i < ids_.size(); ++i) {
+  World& world = scene_world_.world;
+  const std::vector<BallId>& ids = scene_world_.balls;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
     if (held_velocity_[i]) {
       *held_velocity_[i] *= factor;
-    } else {
-      world_.set_velocity(ids_[i], world_.velocity(ids_[i]) * factor);
+    } else if (present(ids[i]) && world.mass(ids[i]) != kImmovable) {
+      world.set_velocity(ids[i], world.velocity(ids[i]) * factor);
     }
   }
 }
 
 int DrawnWorld::ball_at(Vec2 point) const {
-  for (std::size_t i = ids_.size(); i-- > 0;) {
-    const double r = world_.radius(ids_[i]);
-    if (length_squared(world_.position(ids_[i]) - point) <= r * r) return static_cast<int>(i);
+  const World& world = scene_world_.world;
+  const std::vector<BallId>& ids = scene_world_.balls;
+  for (std::size_t i = ids.size(); i-- > 0;) {
+    if (!present(ids[i])) continue;
+    const double r = world.radius(ids[i]);
+    if (length_squared(world.position(ids[i]) - point) <= r * r) return static_cast<int>(i);
   }
   return -1;
 }
@@ -52,48 +99,67 @@ int DrawnWorld::ball_at(Vec2 point) const {
 void DrawnWorld::hold(int index) {
   const BallId ball = id(index);
   auto& kept = held_velocity_[static_cast<std::size_t>(index)];
-  if (!kept) kept = world_.velocity(ball);
-  world_.set_velocity(ball, {});
+  if (!kept) kept = scene_world_.world.velocity(ball);
+  scene_world_.world.set_velocity(ball, {});
 }
 
 Vec2 DrawnWorld::drag_to(int index, Vec2 point) {
   const BallId ball = id(index);
   // Another ball may have knocked the held one since the last move; it stays held.
-  world_.set_velocity(ball, {});
-  return world_.set_position(ball, point, Placement::nearest_free);
+  scene_world_.world.set_velocity(ball, {});
+  return scene_world_.world.set_position(ball, point, Placement::nearest_free);
 }
 
 void DrawnWorld::release(int index) {
   const BallId ball = id(index);
   auto& kept = held_velocity_[static_cast<std::size_t>(index)];
-  if (kept) world_.set_velocity(ball, *kept);
+  if (kept) scene_world_.world.set_velocity(ball, *kept);
   kept.reset();
 }
 
 std::span<const float> DrawnWorld::snapshot() {
-  snapshot_.resize(ids_.size() * 4);
-  for (std::size_t i = 0; i < ids_.size(); ++i) {
-    const Vec2 p = world_.position(ids_[i]);
+  const World& world = scene_world_.world;
+  const std::vector<BallId>& ids = scene_world_.balls;
+  snapshot_.assign(ids.size() * 4, 0.0F);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (!present(ids[i])) continue;
+    const Vec2 p = world.position(ids[i]);
     snapshot_[4 * i] = static_cast<float>(p.x);
     snapshot_[4 * i + 1] = static_cast<float>(p.y);
-    snapshot_[4 * i + 2] = static_cast<float>(world_.radius(ids_[i]));
-    snapshot_[4 * i + 3] = static_cast<float>(length(world_.velocity(ids_[i])));
+    snapshot_[4 * i + 2] = static_cast<float>(world.radius(ids[i]));
+    snapshot_[4 * i + 3] = static_cast<float>(length(world.velocity(ids[i])));
   }
   return snapshot_;
 }
 
-int DrawnWorld::ball_count() const { return static_cast<int>(ids_.size()); }
+int DrawnWorld::ball_count() const {
+  const std::vector<BallId>& ids = scene_world_.balls;
+  return static_cast<int>(
+      std::count_if(ids.begin(), ids.end(), [this](BallId ball) { return present(ball); }));
+}
 
-Vec2 DrawnWorld::position(int index) const { return world_.position(id(index)); }
+Vec2 DrawnWorld::position(int index) const { return scene_world_.world.position(id(index)); }
 
-int DrawnWorld::last_step_contacts() const { return static_cast<int>(world_.contacts().size()); }
+int DrawnWorld::last_step_contacts() const {
+  return static_cast<int>(scene_world_.world.contacts().size());
+}
+
+bool DrawnWorld::present(BallId ball) const {
+  return !ball.is_null() && scene_world_.world.contains(ball);
+}
 
 BallId DrawnWorld::id(int index) const {
-  if (index < 0 || static_cast<std::size_t>(index) >= ids_.size()) {
+  const std::vector<BallId>& ids = scene_world_.balls;
+  if (index < 0 || static_cast<std::size_t>(index) >= ids.size()) {
     throw InvalidArgument("DrawnWorld", "index", std::to_string(index),
-                          "must name a ball: 0 <= index < " + std::to_string(ids_.size()));
+                          "must name a ball: 0 <= index < " + std::to_string(ids.size()));
   }
-  return ids_[static_cast<std::size_t>(index)];
+  const BallId ball = ids[static_cast<std::size_t>(index)];
+  if (!present(ball)) {
+    throw InvalidArgument("DrawnWorld", "index", std::to_string(index),
+                          "names a ball that fell into a pocket");
+  }
+  return ball;
 }
 
 }  // namespace carom::web

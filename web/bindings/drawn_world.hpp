@@ -3,7 +3,9 @@
 // and a flat buffer of their positions that JavaScript reads without a call per ball.
 //
 // Pages build one shape by shape (add_ball, add_segment, add_arc) and fill it with generated
-// balls (lattice_filling.hpp); a scene file's contents can be handed over the same way.
+// balls (lattice_filling.hpp), or load a scene file (scene_loading.hpp): then the world is the
+// scene library's SceneWorld, stepped with carom::step_scene so that pockets swallow balls. A
+// ball keeps its index when it falls into a pocket; it is then no longer in the world.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "carom/scene.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
 #include "carom/world.hpp"
@@ -21,6 +24,8 @@ namespace carom::web {
 class DrawnWorld {
  public:
   explicit DrawnWorld(const WorldDef& def);
+  // The world of a loaded scene: its balls (in scene order), walls, pockets and colours.
+  explicit DrawnWorld(SceneWorld scene_world);
 
   // ---- building ----
   // Returns the ball's index (0, 1, ... in the order added).
@@ -29,7 +34,7 @@ class DrawnWorld {
   void add_arc(const Arc& arc);
 
   // ---- running ----
-  // carom::World::step; returns the time advanced.
+  // carom::step_scene (carom::World::step when there are no pockets); returns the time advanced.
   double step(double dt);
   // Multiplies every velocity by factor (> 0): the gas runs hotter or colder.
   void scale_speeds(double factor);
@@ -46,24 +51,32 @@ class DrawnWorld {
   void release(int index);
 
   // ---- reading ----
-  // x, y, radius and speed of each ball, four floats per ball in the order added. The view is
-  // valid until the next call into the module (memory may grow).
+  // x, y, radius and speed of each ball, four floats per ball in the order added (radius 0 for a
+  // ball a pocket took). The view is valid until the next call into the module (memory may grow).
   [[nodiscard]] std::span<const float> snapshot();
-  [[nodiscard]] int ball_count() const;  // not noexcept: embind 3.1.6 cannot bind those
+  // Balls in the world now (potted balls not counted); not noexcept: embind 3.1.6 cannot bind
+  // those.
+  [[nodiscard]] int ball_count() const;
+  // Each ball's colour as the scene gives it (CSS colour text), "" when unset; by index.
+  [[nodiscard]] const std::vector<std::string>& colors() const noexcept { return colors_; }
+  [[nodiscard]] const std::vector<ScenePocket>& pockets() const noexcept { return pockets_; }
   [[nodiscard]] Vec2 position(int index) const;
   [[nodiscard]] const std::vector<Segment>& segments() const noexcept { return segments_; }
   [[nodiscard]] const std::vector<Arc>& arcs() const noexcept { return arcs_; }
   [[nodiscard]] const WorldDef& def() const noexcept { return def_; }
-  [[nodiscard]] const World& world() const noexcept { return world_; }
+  [[nodiscard]] const World& world() const noexcept { return scene_world_.world; }
   // Contacts resolved by the last step.
   [[nodiscard]] int last_step_contacts() const;
 
  private:
   [[nodiscard]] BallId id(int index) const;
+  [[nodiscard]] bool present(BallId ball) const;
 
   WorldDef def_;
-  World world_;
-  std::vector<BallId> ids_;
+  // The world and its balls by index (scene_world_.balls; null once potted), pockets included.
+  SceneWorld scene_world_;
+  std::vector<std::string> colors_;
+  std::vector<ScenePocket> pockets_;
   std::vector<Segment> segments_;
   std::vector<Arc> arcs_;
   std::vector<std::optional<Vec2>> held_velocity_;  // set while a ball is held

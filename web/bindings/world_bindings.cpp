@@ -5,12 +5,18 @@
 #include "drawn_world.hpp"
 #include "js_error.hpp"
 #include "lattice_filling.hpp"
+#include "scene_loading.hpp"
 
 namespace carom::web {
 namespace {
 
 DrawnWorld* make_world(const WorldDef& def) {
   return guarded_call([&] { return new DrawnWorld(def); });
+}
+
+// The scene library's SceneError reaches the page as an Error with the same message.
+DrawnWorld* load_scene(const std::string& text, const std::string& name) {
+  return guarded_call([&] { return new DrawnWorld(load_drawn_scene(text, name)); });
 }
 
 int fill(DrawnWorld& w, const LatticeFilling& filling) {
@@ -67,6 +73,24 @@ emscripten::val arcs(const DrawnWorld& w) {
   return out;
 }
 
+emscripten::val colors(const DrawnWorld& w) {
+  emscripten::val out = emscripten::val::array();
+  for (const std::string& color : w.colors()) out.call<void>("push", color);
+  return out;
+}
+
+emscripten::val pockets(const DrawnWorld& w) {
+  emscripten::val out = emscripten::val::array();
+  for (const ScenePocket& p : w.pockets()) {
+    emscripten::val pocket = emscripten::val::object();
+    pocket.set("x", p.position.x);
+    pocket.set("y", p.position.y);
+    pocket.set("radius", p.radius);
+    out.call<void>("push", pocket);
+  }
+  return out;
+}
+
 WorldDef def(const DrawnWorld& w) { return w.def(); }
 double world_time(const DrawnWorld& w) { return w.world().time(); }
 double kinetic_energy(const DrawnWorld& w) { return w.world().kinetic_energy(); }
@@ -99,6 +123,7 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .field("speed", &LatticeFilling::speed)
       .field("seed", &LatticeFilling::seed);
 
+  emscripten::function("load_scene", &load_scene, emscripten::allow_raw_pointers());
   emscripten::class_<DrawnWorld>("DrawnWorld")
       .constructor(&make_world, emscripten::allow_raw_pointers())
       .function("add_ball", &add_ball)
@@ -115,6 +140,8 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("snapshot", &snapshot)
       .function("segments", &segments)
       .function("arcs", &arcs)
+      .function("colors", &colors)
+      .function("pockets", &pockets)
       .function("def", &def)
       .function("ball_count", &DrawnWorld::ball_count)
       .function("last_step_contacts", &DrawnWorld::last_step_contacts)

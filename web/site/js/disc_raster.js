@@ -41,3 +41,15 @@ export function packColour(hex) {
   const value = parseInt(hex.slice(1), 16);
   return (0xff000000 | ((value & 0xff) << 16) | (value & 0xff00) | (value >> 16)) >>> 0;
 }
+
+// Any CSS colour text ('red', '#f80', 'rgb(…)') as packColour's number, read back from a 1×1
+// canvas; undefined for text that is not a colour.
+export function packCssColour(text) {
+  const probe = document.createElement('canvas').getContext('2d', {willReadFrequently: true});
+  probe.fillStyle = '#010203';
+  probe.fillStyle = text;
+  if (probe.fillStyle === '#010203' && text.trim().toLowerCase() !== '#010203') return undefined;
+  probe.fillRect(0, 0, 1, 1);
+  const [r, g, b] = probe.getImageData(0, 0, 1, 1).data;
+  return (0xff000000 | (b << 16) | (g << 8) | r) >>> 0;
+}

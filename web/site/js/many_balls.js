@@ -1,9 +1,11 @@
-// "Many balls": a carom::World in a box, advanced 1/60 time unit per frame and drawn on a canvas.
-// The world, the dragging and every number shown come from carom (carom::web::DrawnWorld).
+// "Many balls": a carom::World in a box, or any carom scene file (an example, or a file dropped on
+// the page or chosen with the picker), advanced 1/60 time unit per frame and drawn on a canvas.
+// The world, the dragging, the pockets and every number shown come from carom
+// (carom::web::DrawnWorld; scene files through carom's scene library).
 import {attempt, carom} from './carom.js';
 import {num, vec} from './format.js';
-import {DiscRaster, packColour} from './disc_raster.js';
-import {sceneSources} from './scene_sources.js';
+import {DiscRaster, packColour, packCssColour} from './disc_raster.js';
+import {exampleSources, sceneFileSource, sceneSources} from './scene_sources.js';
 import {fillReadout, slider} from './sliders.js';
 
 const FRAME_TIME = 1 / 60;  // simulated time per frame
@@ -12,15 +14,29 @@ const RATE_WINDOW = 1;      // time units over which collisions per time unit ar
 const STATS_KEPT = 1200;    // frames of timings kept for the benchmark (web/bench)
 const SPEED_COLOURS = ['#1e88e5', '#43a047', '#fdd835', '#fb8c00', '#e53935'];
 
+const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('box');
 const context = canvas.getContext('2d', {alpha: false});
 const raster = new DiscRaster(context);
 const BACKGROUND = packColour('#fafafa');
 const BAND_COLOURS = SPEED_COLOURS.map(packColour);
+const POCKET_COLOUR = packColour('#212121');
+const RIM_COLOUR = packColour('#424242');
+const RIM_WIDTH = 1;  // pixels
+// Why a scene could not be loaded: the scene library's message (file:line:column: ...). Apart
+// from the error line, which the next call that succeeds clears.
+const sceneError = document.getElementById('scene-error');
+const sources = [...sceneSources];
+try {
+  sources.push(...await exampleSources());
+} catch (error) {
+  sceneError.textContent = `The examples could not be listed: ${error.message}`;
+}
 const sceneSelect = document.getElementById('scene');
-for (const source of sceneSources) sceneSelect.add(new Option(source.label, source.id));
+for (const source of sources) sceneSelect.add(new Option(source.label, source.id));
+// ?scene=ID opens that source (e.g. example:billiards.json); an unknown ID is ignored.
+if (sources.some((s) => s.id === params.get('scene'))) sceneSelect.value = params.get('scene');
 
-const params = new URLSearchParams(location.search);
 const countInput = document.getElementById('count');
 if (params.has('n')) {
   const wanted = Number(params.get('n'));
@@ -34,6 +50,7 @@ showCount();
 let currentSpeed = Number(document.getElementById('speed').value);
 const speed = slider('speed', (s) => {
   attempt(() => world.scale_speeds(s / currentSpeed));
+  colourTop *= s / currentSpeed;
   currentSpeed = s;
 });
 // carom::World fixes a ball's restitution when the ball is added, so a new e starts the scene
@@ -42,8 +59,12 @@ const speed = slider('speed', (s) => {
 const restitution = slider('restitution', rebuild);
 
 let world = null;
+// Per ball: the colour the scene gives it, or 0 (coloured by speed, against colourTop).
+let ballColours = new Uint32Array(0);
+let colourTop = 1;
+let pockets = [];
 // The part of the world on the canvas: the box (or periodic cell), or for an open world the
-// extent of its balls and walls when it was built.
+// extent of its balls, walls and pockets when it was built; flipY: y up on the screen.
 let view = {x: 0, y: 0, width: 1, height: 1};
 let running = params.get('paused') !== '1';
 let held = -1;
@@ -60,15 +81,50 @@ function keep(list, value) {
   if (list.length > STATS_KEPT) list.shift();
 }
 
-function rebuild() {
-  const source = sceneSources.find((s) => s.id === sceneSelect.value);
-  const built = attempt(() => source.build(carom, {
+let rebuilds = 0;  // a slow load that a newer choice overtook is dropped
+
+async function rebuild() {
+  const source = sources.find((s) => s.id === sceneSelect.value);
+  const ticket = ++rebuilds;
+  for (const id of ['count', 'restitution']) document.getElementById(id).disabled = !!source.fromFile;
+  if (source.load) {
+    try {
+      await source.load();
+    } catch (error) {
+      sceneError.textContent = `${source.label}: ${error.message}`;
+      return;
+    }
+    if (ticket !== rebuilds) return;
+  }
+  install(source, loaded(() => source.build(carom, {
     count: COUNTS[Number(countInput.value)], speed: speed.value, restitution: restitution.value,
-  }));
+  })));
+}
+
+// build() made, or undefined with the reason shown on the page.
+function loaded(build) {
+  try {
+    const built = build();
+    sceneError.textContent = '';
+    return built;
+  } catch (error) {
+    sceneError.textContent = String(error.message ?? error);
+    return undefined;
+  }
+}
+
+// Shows built (a DrawnWorld from source); nothing changes when the build failed (undefined: the
+// error is on the page).
+function install(source, built) {
   if (!built) return;
   if (world) world.delete();
   world = built;
-  view = viewOf(world);
+  ballColours = Uint32Array.from(world.colors(), (text) => (text && packCssColour(text)) || 0);
+  pockets = world.pockets();
+  colourTop = source.fromFile ? 2 * meanSpeed(world) : 2 * speed.value;
+  // Scene files are drawn y up, as `carom run --svg` draws them (their arcs run
+  // counter-clockwise); the page's own boxes keep the screen's y down.
+  view = {...viewOf(world), flipY: !!source.fromFile};
   canvas.style.aspectRatio = `${view.width} / ${view.height}`;
   currentSpeed = speed.value;
   held = -1;
@@ -76,7 +132,52 @@ function rebuild() {
   for (const key of Object.keys(stats)) stats[key].length = 0;
   draw();
   report();
+  document.body.dataset.scene = source.id;
 }
+
+function meanSpeed(w) {
+  const balls = w.snapshot();
+  let sum = 0;
+  let moving = 0;
+  for (let i = 0; i < balls.length; i += 4) {
+    if (balls[i + 3] > 0) sum += balls[i + 3], ++moving;
+  }
+  return moving ? sum / moving : 1;
+}
+
+// ---- a scene file from the user ----------------------------------------------------------------
+
+async function openFile(file) {
+  const text = await file.text();
+  const id = `file:${file.name}`;
+  const source = sceneFileSource(id, `File: ${file.name}`, file.name, async () => text);
+  await source.load();
+  const built = loaded(() => source.build(carom));
+  if (!built) return;  // the scene library's message (file:line:column) is on the page
+  const old = sources.findIndex((s) => s.id === id);
+  if (old >= 0) {
+    sources[old] = source;
+  } else {
+    sources.push(source);
+    sceneSelect.add(new Option(source.label, id));
+  }
+  sceneSelect.value = id;
+  ++rebuilds;
+  for (const name of ['count', 'restitution']) document.getElementById(name).disabled = true;
+  install(source, built);
+}
+
+const fileInput = document.getElementById('scene-file');
+fileInput.addEventListener('change', () => {
+  if (fileInput.files.length) openFile(fileInput.files[0]);
+  fileInput.value = '';
+});
+document.addEventListener('dragover', (event) => event.preventDefault());
+document.addEventListener('drop', (event) => {
+  event.preventDefault();
+  const file = event.dataTransfer?.files[0];
+  if (file) openFile(file);
+});
 
 // ---- drawing -------------------------------------------------------------------------------
 
@@ -99,6 +200,7 @@ function viewOf(w) {
   for (let i = 0; i < balls.length; i += 4) cover(balls[i], balls[i + 1], balls[i + 2]);
   for (const s of w.segments()) cover(s.a.x, s.a.y, 0), cover(s.b.x, s.b.y, 0);
   for (const a of w.arcs()) cover(a.center.x, a.center.y, a.radius);
+  for (const p of w.pockets()) cover(p.x, p.y, p.radius);
   if (extent.x0 > extent.x1) return {x: -1, y: -1, width: 2, height: 2};
   const width = extent.x1 - extent.x0 || 1;
   const height = extent.y1 - extent.y0 || 1;
@@ -120,18 +222,28 @@ function draw() {
   resize();
   const scale = canvas.width / view.width;
   const px = (x) => (x - view.x) * scale;
-  const py = (y) => (y - view.y) * scale;
-  // x, y, radius, speed per ball, coloured by speed.
-  const balls = world.snapshot();
-  const top = 2 * currentSpeed;
+  const py = (y) => (view.flipY ? view.y + view.height - y : y - view.y) * scale;
   raster.begin(BACKGROUND);
+  for (const p of pockets) raster.disc(px(p.x), py(p.y), p.radius * scale, POCKET_COLOUR);
+  // x, y, radius, speed per ball (radius 0: potted), in the scene's colour or by speed.
+  const balls = world.snapshot();
   for (let i = 0; i < balls.length; i += 4) {
+    if (balls[i + 2] === 0) continue;
     const band = Math.min(BAND_COLOURS.length - 1,
-                          Math.floor(balls[i + 3] / top * BAND_COLOURS.length));
-    raster.disc(px(balls[i]), py(balls[i + 1]), balls[i + 2] * scale, BAND_COLOURS[band]);
+                          Math.floor(balls[i + 3] / colourTop * BAND_COLOURS.length));
+    const colour = ballColours[i / 4];
+    if (colour) {
+      // A scene's own colour may be as light as the background (a white cue ball): a dark rim.
+      raster.disc(px(balls[i]), py(balls[i + 1]), balls[i + 2] * scale, RIM_COLOUR);
+      raster.disc(px(balls[i]), py(balls[i + 1]), balls[i + 2] * scale - RIM_WIDTH, colour);
+    } else {
+      raster.disc(px(balls[i]), py(balls[i + 1]), balls[i + 2] * scale, BAND_COLOURS[band]);
+    }
   }
   raster.end();
-  context.lineWidth = Math.max(1, scale * 0.15);
+  if (held >= 0 && balls[4 * held + 2] === 0) held = -1;  // it fell into a pocket
+  // In pixels: a scene's length unit may be a metre or a millimetre.
+  context.lineWidth = 2 * (window.devicePixelRatio || 1);
   context.strokeStyle = '#333';
   for (const s of world.segments()) {
     context.beginPath();
@@ -141,8 +253,10 @@ function draw() {
   }
   for (const a of world.arcs()) {
     context.beginPath();
-    context.arc(px(a.center.x), py(a.center.y), a.radius * scale, a.start_angle,
-                a.end_angle);
+    // y flipped: the world's angle θ is the screen's −θ, so the arc runs from −end to −start.
+    const [start, end] = view.flipY ? [-a.end_angle, -a.start_angle]
+                                    : [a.start_angle, a.end_angle];
+    context.arc(px(a.center.x), py(a.center.y), a.radius * scale, start, end);
     context.stroke();
   }
   if (held >= 0) {
@@ -233,8 +347,9 @@ sceneSelect.addEventListener('change', rebuild);
 
 function worldPoint(event) {
   const box = canvas.getBoundingClientRect();
+  const down = (event.clientY - box.top) / box.height * view.height;
   return {x: view.x + (event.clientX - box.left) / box.width * view.width,
-          y: view.y + (event.clientY - box.top) / box.height * view.height};
+          y: view.flipY ? view.y + view.height - down : view.y + down};
 }
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -264,7 +379,7 @@ window.addEventListener('resize', () => { if (world) draw(); });
 // For the tests (web/tests): the world, to find where a ball is before dragging it.
 window.caromPlayground = {get world() { return world; }, get view() { return view; }};
 
-rebuild();
+await rebuild();
 setRunning(running);
 requestAnimationFrame(frame);
 document.body.dataset.ready = 'true';

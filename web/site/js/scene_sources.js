@@ -2,9 +2,8 @@
 // (a carom::World plus the shapes it was given, for drawing) from the page's controls; the page
 // asks nothing else of a source, and draws whatever walls and arcs the world holds.
 //
-// Scene files: a source that reads a carom scene (examples/*.json, or a file dropped on the
-// page) fits here as one more entry whose build() turns the file's text into a DrawnWorld
-// (through a binding to the scene loader, carom_scene). See docs/playground.md.
+// Scene files (examples/*.json, or a file dropped on the page or chosen with the file picker)
+// are sources too: sceneFileSource below. See docs/playground.md.
 const BOX_SIZE = {x: 160, y: 100};
 
 // Packing fraction of the generated balls: dense enough for many collisions, loose enough that
@@ -60,3 +59,34 @@ export const sceneSources = [
     }),
   },
 ];
+
+// ---- scene files ---------------------------------------------------------------------------
+
+// A scene file as a source: its text is read once (load), then carom's scene library
+// (carom.load_scene: parse_scene + make_world) builds the world; the scene sets the number of
+// balls, their speeds and the restitution, so the page's N and e sliders do not apply.
+export function sceneFileSource(id, label, name, readText) {
+  let text = null;
+  return {
+    id,
+    label,
+    fromFile: true,
+    async load() {
+      if (text === null) text = await readText();
+    },
+    build: (carom) => carom.load_scene(text, name),
+  };
+}
+
+// The examples the wasm build copies beside the pages (site/examples/, listed in index.json).
+export async function exampleSources() {
+  const response = await fetch('examples/index.json');
+  if (!response.ok) throw new Error(`examples/index.json: HTTP ${response.status}`);
+  const names = await response.json();
+  return names.map((name) => sceneFileSource(`example:${name}`, `Example: ${name}`, name,
+                                             async () => {
+    const file = await fetch(`examples/${name}`);
+    if (!file.ok) throw new Error(`examples/${name}: HTTP ${file.status}`);
+    return file.text();
+  }));
+}

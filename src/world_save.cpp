@@ -336,7 +336,11 @@ void World::Impl::load_payload(ByteReader& in) {
     free_slots.push_back(slot);
   }
 
-  if (grid_valid) load_grid(in);
+  if (grid_valid) {
+    load_grid(in);
+  } else {
+    grid.reserve_balls(slots);  // in no cell: remove_ball's erase then has nothing to do
+  }
   if (events_valid) {
     queue.reset(slots);
     for (std::uint32_t i = 0; i < slots; ++i) {
@@ -347,8 +351,8 @@ void World::Impl::load_payload(ByteReader& in) {
       event.partner = in.u32("event partner");
       event.partner_version = in.u32("event partner version");
       const std::uint32_t partners = kind == 0 ? slots : (kind == 1 ? wall_count : 4);
-      if (kind > 2 || event.partner >= partners || std::isnan(event.time) ||
-          event.time == -std::numeric_limits<double>::infinity()) {
+      if (kind > 2 || event.partner >= partners || (kind == 0 && event.partner == i) ||
+          std::isnan(event.time) || event.time == -std::numeric_limits<double>::infinity()) {
         in.inconsistent("event of ball slot " + std::to_string(i), number_text(event.time),
                         "kind, partner or time out of range");
       }

@@ -262,7 +262,11 @@ void World::Impl::load_payload(ByteReader& in) {
       arc.radius = in.f64("arc radius");
       arc.start_angle = in.f64("arc start angle");
       arc.end_angle = in.f64("arc end angle");
-      walls.push_back(detail::make_arc_wall("World::load", arc));  // validates the arc
+      try {
+        walls.push_back(detail::make_arc_wall("World::load", arc));  // validates the arc
+      } catch (const InvalidArgument& e) {
+        in.inconsistent("arc " + std::to_string(w), e.value(), e.requirement());
+      }
     } else {
       Segment segment;
       segment.a = in.vec2("segment a");

@@ -200,7 +200,8 @@ class World {
   // state; both start empty/false).
   // The format is versioned binary with a checksum; load throws carom::InvalidArgument saying
   // what is wrong: bad magic, unsupported version, truncated, checksum mismatch, or inconsistent
-  // content (naming the field). Streams must be opened in binary mode.
+  // content (naming the field). It checks structure, not physics: audit() after load finds
+  // overlaps in a file edited by hand. Streams must be opened in binary mode.
   void save(std::ostream& out) const;
   [[nodiscard]] static World load(std::istream& in);
   // The same through a file. save writes a temporary file beside `path`, syncs it to the disk and

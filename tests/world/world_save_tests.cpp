@@ -254,6 +254,16 @@ TEST(WorldSave, SavingALoadedWorldGivesTheSameBytes) {
   EXPECT_EQ(first.str(), second.str());
 }
 
+TEST(WorldSave, LoadReadsOneSaveFromAStream) {
+  World world = periodic_gas();
+  std::stringstream file(std::ios::in | std::ios::out | std::ios::binary);
+  world.save(file);
+  world.run_collisions(100);
+  world.save(file);
+  EXPECT_EQ(World::load(file).collision_count(), 0U);
+  EXPECT_EQ(World::load(file).collision_count(), 100U);
+}
+
 TEST(WorldSave, ContactsAndStopConditionAreNotSaved) {
   World world = periodic_gas();
   world.set_stop_condition([](const ContactEvent&) { return true; });

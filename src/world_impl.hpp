@@ -14,6 +14,7 @@
 #include "event_queue.hpp"
 #include "grid.hpp"
 #include "huge_page_allocator.hpp"
+#include "save_format.hpp"
 #include "wall.hpp"
 
 namespace carom {
@@ -123,6 +124,13 @@ struct World::Impl {
     last_contact = contact;
     if (record_contacts) contacts.push_back(contact);
   }
+
+  // ---- save and resume (world_save.cpp) ----
+  [[nodiscard]] std::string save_payload() const;
+  // Fills a freshly constructed world from a payload whose checksum matched, checking that its
+  // content is consistent.
+  void load_payload(detail::ByteReader& in);
+  void load_grid(detail::ByteReader& in);
 
   // ---- engine (world_engine.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,

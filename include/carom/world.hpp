@@ -14,7 +14,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <span>
@@ -185,6 +187,27 @@ class World {
   void set_velocity(BallId id, Vec2 velocity);
   // Returns where the ball ended up (see Placement).
   Vec2 set_position(BallId id, Vec2 position, Placement placement = Placement::refuse);
+
+  // ---- saving and resuming (format: docs/world.md, "Saving and resuming") ----
+  // save writes everything that decides the world's future: every slot (live or free) with its
+  // generation, local time, motion, radius, mass, restitution, user data and (with collapse_time
+  // > 0) last contact time; the free-slot order; walls; the WorldDef; time; collision count;
+  // contact recording; the broad-phase grid and every ball's pending predicted event. A world
+  // loaded from it and given the same calls as the original gives bit-identical contacts and
+  // states (on the same build), whether saved between steps, between run_collisions calls, or
+  // after a stop condition ended a run early. Not saved: the stop condition (a function: set it
+  // again after load), the last run's contacts() and stopped_early() (results of a call, not
+  // state; both start empty/false).
+  // The format is versioned binary with a checksum; load throws carom::InvalidArgument saying
+  // what is wrong: bad magic, unsupported version, truncated, checksum mismatch, or inconsistent
+  // content (naming the field). It checks structure, not physics: audit() after load finds
+  // overlaps in a file edited by hand. Streams must be opened in binary mode.
+  void save(std::ostream& out) const;
+  [[nodiscard]] static World load(std::istream& in);
+  // The same through a file. save writes a temporary file beside `path`, syncs it to the disk and
+  // renames it onto `path`, so the file holds the old save or all of the new one, never half.
+  void save(const std::filesystem::path& path) const;
+  [[nodiscard]] static World load(const std::filesystem::path& path);
 
   // ---- checking ----
   // Check of the invariants (no two balls or a ball and a wall overlapping by more than

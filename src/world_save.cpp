@@ -1,0 +1,442 @@
+// World::save and World::load: everything that decides a world's future, so that a resumed run
+// is bit-identical to an uninterrupted one. Format and the reasoning behind what is saved:
+// docs/world.md, "Saving and resuming".
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "atomic_write.hpp"
+#include "carom/error.hpp"
+#include "save_format.hpp"
+#include "validate.hpp"
+#include "world_impl.hpp"
+
+namespace carom {
+
+using detail::ByteReader;
+using detail::ByteWriter;
+
+namespace {
+
+constexpr char kMagic[8] = {'C', 'A', 'R', 'O', 'M', 'W', 'L', 'D'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
+// Payloads are read in pieces of this size, so that a damaged size field cannot make load
+// allocate more than the stream really holds.
+constexpr std::size_t kReadChunk = std::size_t{1} << 20;
+
+void put_u32(std::string& out, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((value >> (8 * i)) & 0xffU));
+}
+void put_u64(std::string& out, std::uint64_t value) {
+  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((value >> (8 * i)) & 0xffU));
+}
+std::uint64_t get_unsigned(const char* bytes, int count) {
+  std::uint64_t value = 0;
+  for (int i = 0; i < count; ++i) {
+    value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[i])) << (8 * i);
+  }
+  return value;
+}
+
+std::string framed(const std::string& payload) {
+  std::string out(kMagic, sizeof kMagic);
+  put_u32(out, kVersion);
+  put_u64(out, payload.size());
+  put_u64(out, detail::fnv1a64(payload));
+  return out + payload;
+}
+
+[[noreturn]] void damaged(const char* function, const std::string& source, const std::string& value,
+                          const std::string& why) {
+  throw InvalidArgument(function, source, value, why);
+}
+
+// Reads the header and the payload it announces, checking magic, version, length and checksum.
+std::string read_payload(const char* function, const std::string& source, std::istream& in) {
+  char header[kHeaderSize];
+  in.read(header, kHeaderSize);
+  const auto header_read = static_cast<std::size_t>(in.gcount());
+  if (header_read < sizeof kMagic || std::memcmp(header, kMagic, sizeof kMagic) != 0) {
+    damaged(function, source, std::to_string(header_read) + " bytes",
+            "bad magic: not a carom world save (it starts with \"CAROMWLD\")");
+  }
+  if (header_read < kHeaderSize) {
+    damaged(function, source, std::to_string(header_read) + " bytes",
+            "truncated: the header needs " + std::to_string(kHeaderSize) + " bytes");
+  }
+  const auto version = static_cast<std::uint32_t>(get_unsigned(header + 8, 4));
+  if (version != kVersion) {
+    damaged(function, source, "version " + std::to_string(version),
+            "unsupported version (this build reads version " + std::to_string(kVersion) + ")");
+  }
+  const std::uint64_t size = get_unsigned(header + 12, 8);
+  const std::uint64_t checksum = get_unsigned(header + 20, 8);
+  std::string payload;
+  while (payload.size() < size) {
+    const std::size_t want =
+        static_cast<std::size_t>(std::min<std::uint64_t>(kReadChunk, size - payload.size()));
+    const std::size_t old_size = payload.size();
+    payload.resize(old_size + want);
+    in.read(payload.data() + old_size, static_cast<std::streamsize>(want));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (got < want) {
+      damaged(function, source, std::to_string(old_size + got) + " payload bytes",
+              "truncated: the header announces " + std::to_string(size) + " payload bytes");
+    }
+  }
+  const std::uint64_t actual = detail::fnv1a64(payload);
+  if (actual != checksum) {
+    damaged(function, source, "FNV-1a " + std::to_string(actual),
+            "checksum mismatch: the header says " + std::to_string(checksum) +
+                " (the file is damaged)");
+  }
+  return payload;
+}
+
+bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+}  // namespace
+
+// ---- writing ---------------------------------------------------------------------------------
+
+std::string World::Impl::save_payload() const {
+  ByteWriter out;
+  out.u8(static_cast<std::uint8_t>(def.boundary));
+  out.vec2(def.lower);
+  out.vec2(def.upper);
+  out.f64(def.restitution);
+  out.f64(def.collapse_time);
+  out.f64(def.cell_size);
+
+  out.f64(time);
+  out.u64(collisions);
+  out.f64(largest_radius);
+  out.u8(record_contacts ? 1 : 0);
+  out.u8(grid_valid ? 1 : 0);
+  out.u8(events_valid ? 1 : 0);
+
+  out.u32(static_cast<std::uint32_t>(walls.size()));
+  for (const detail::Wall& wall : walls) {
+    out.u8(wall.is_arc ? 1 : 0);
+    if (wall.is_arc) {
+      out.vec2(wall.arc.center);
+      out.f64(wall.arc.radius);
+      out.f64(wall.arc.start_angle);
+      out.f64(wall.arc.end_angle);
+    } else {
+      out.vec2(wall.segment.a);
+      out.vec2(wall.segment.b);
+    }
+  }
+
+  const auto slots = static_cast<std::uint32_t>(balls.size());
+  out.u32(slots);
+  for (std::uint32_t i = 0; i < slots; ++i) {
+    const detail::BallSlot& b = balls[i];
+    const detail::BallInfo& info = infos[i];
+    out.u8(b.alive ? 1 : 0);
+    out.vec2(b.position);
+    out.vec2(b.velocity);
+    out.f64(b.local_time);
+    out.f64(b.radius);
+    out.f64(b.inverse_mass);
+    out.u32(b.version);
+    out.f64(info.mass);
+    out.f64(info.restitution);
+    out.u64(info.user_data);
+    out.u32(info.generation);
+    if (def.collapse_time > 0.0) out.f64(last_contact_times[i]);
+  }
+  out.u32(static_cast<std::uint32_t>(free_slots.size()));
+  for (const std::uint32_t slot : free_slots) out.u32(slot);
+
+  if (grid_valid) {
+    out.vec2(grid.lower());
+    out.vec2(grid.cell_size());
+    out.i32(grid.nx());
+    out.i32(grid.ny());
+    for (std::uint32_t i = 0; i < slots; ++i) out.i32(balls[i].alive ? grid.cell_of_ball(i) : -1);
+    // The balls in the order of the cells' lists, so that load rebuilds every list in the same
+    // order (prediction's result does not depend on it, but the engine's path then is the same).
+    const std::int32_t cells = grid.nx() * grid.ny();
+    for (std::int32_t c = 0; c < cells; ++c) {
+      for (std::int32_t j = grid.first_ball(c); j != detail::kNoBall;
+           j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+        out.u32(static_cast<std::uint32_t>(j));
+      }
+    }
+  }
+  if (events_valid) {
+    // Every ball's pending event as predicted, mirrored events and stale ones included: they
+    // were computed from earlier positions and cannot be re-derived from the state above.
+    for (std::uint32_t i = 0; i < slots; ++i) {
+      const detail::Event event = queue.slot(i);
+      out.f64(event.time);
+      out.u8(static_cast<std::uint8_t>(event.kind));
+      out.u32(event.partner);
+      out.u32(event.partner_version);
+    }
+  }
+  return out.bytes();
+}
+
+void World::save(std::ostream& out) const {
+  const std::string bytes = framed(impl_->save_payload());
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.flush();
+  if (!out) {
+    throw InvalidArgument("World::save", "out", "-", "the stream failed while writing");
+  }
+}
+
+void World::save(const std::filesystem::path& path) const {
+  detail::write_file_atomically("World::save", path, framed(impl_->save_payload()));
+}
+
+// ---- reading ---------------------------------------------------------------------------------
+
+void World::Impl::load_payload(ByteReader& in) {
+  using detail::number_text;
+  using detail::vector_text;
+  const std::uint8_t boundary = in.u8("def.boundary");
+  if (boundary > static_cast<std::uint8_t>(Boundary::periodic)) {
+    in.inconsistent("def.boundary", std::to_string(boundary), "not a Boundary (0, 1 or 2)");
+  }
+  def.boundary = static_cast<Boundary>(boundary);
+  def.lower = in.vec2("def.lower");
+  def.upper = in.vec2("def.upper");
+  def.restitution = in.f64("def.restitution");
+  def.collapse_time = in.f64("def.collapse_time");
+  def.cell_size = in.f64("def.cell_size");
+  if (def.boundary != Boundary::open && !(finite(def.lower) && finite(def.upper) &&
+                                          def.upper.x > def.lower.x && def.upper.y > def.lower.y)) {
+    in.inconsistent("def.upper", vector_text(def.upper),
+                    "must be finite and lie above and to the right of def.lower");
+  }
+  if (!(def.restitution >= 0.0 && def.restitution <= 1.0)) {
+    in.inconsistent("def.restitution", number_text(def.restitution), "must lie in [0, 1]");
+  }
+  if (!(def.collapse_time >= 0.0 && std::isfinite(def.collapse_time))) {
+    in.inconsistent("def.collapse_time", number_text(def.collapse_time), "must be finite, >= 0");
+  }
+  if (!(def.cell_size >= 0.0 && std::isfinite(def.cell_size))) {
+    in.inconsistent("def.cell_size", number_text(def.cell_size), "must be finite, >= 0");
+  }
+  period = def.upper - def.lower;
+  half_period = period * 0.5;
+
+  time = in.f64("time");
+  if (!std::isfinite(time)) in.inconsistent("time", number_text(time), "must be finite");
+  collisions = in.u64("collision count");
+  largest_radius = in.f64("largest radius");
+  record_contacts = in.u8("contact recording") != 0;
+  grid_valid = in.u8("grid valid") != 0;
+  events_valid = in.u8("events valid") != 0;
+  if (events_valid && !grid_valid) {
+    in.inconsistent("events valid", "1", "pending events need the grid they were predicted in");
+  }
+
+  const std::uint32_t wall_count = in.u32("wall count");
+  if (wall_count > in.remaining()) {
+    in.inconsistent("wall count", std::to_string(wall_count), "more than the bytes that follow");
+  }
+  if (def.boundary == Boundary::periodic && wall_count != 0) {
+    in.inconsistent("wall count", std::to_string(wall_count), "a periodic world has no walls");
+  }
+  if (def.boundary == Boundary::box && wall_count < 4) {
+    in.inconsistent("wall count", std::to_string(wall_count), "a box has its four walls");
+  }
+  boundary_walls = def.boundary == Boundary::box ? 4 : 0;
+  for (std::uint32_t w = 0; w < wall_count; ++w) {
+    if (in.u8("wall kind") != 0) {
+      Arc arc;
+      arc.center = in.vec2("arc center");
+      arc.radius = in.f64("arc radius");
+      arc.start_angle = in.f64("arc start angle");
+      arc.end_angle = in.f64("arc end angle");
+      try {
+        walls.push_back(detail::make_arc_wall("World::load", arc));  // validates the arc
+      } catch (const InvalidArgument& e) {
+        in.inconsistent("arc " + std::to_string(w), e.value(), e.requirement());
+      }
+    } else {
+      Segment segment;
+      segment.a = in.vec2("segment a");
+      segment.b = in.vec2("segment b");
+      if (!finite(segment.a) || !finite(segment.b)) {
+        in.inconsistent("segment", vector_text(segment.a) + "-" + vector_text(segment.b),
+                        "must be finite");
+      }
+      walls.push_back(detail::make_segment_wall(segment));
+    }
+  }
+
+  const std::uint32_t slots = in.u32("ball slot count");
+  if (slots > in.remaining() || slots > detail::EventQueue::kMaxBalls) {
+    in.inconsistent("ball slot count", std::to_string(slots), "more than the bytes that follow");
+  }
+  const bool tc = def.collapse_time > 0.0;
+  balls.resize(slots);
+  infos.resize(slots);
+  if (tc) last_contact_times.resize(slots);
+  double largest_alive = 0.0;
+  for (std::uint32_t i = 0; i < slots; ++i) {
+    detail::BallSlot& b = balls[i];
+    detail::BallInfo& info = infos[i];
+    b.alive = in.u8("ball alive") != 0;
+    b.position = in.vec2("ball position");
+    b.velocity = in.vec2("ball velocity");
+    b.local_time = in.f64("ball local time");
+    b.radius = in.f64("ball radius");
+    b.inverse_mass = in.f64("ball inverse mass");
+    b.version = in.u32("ball version");
+    info.mass = in.f64("ball mass");
+    info.restitution = in.f64("ball restitution");
+    info.user_data = in.u64("ball user data");
+    info.generation = in.u32("ball generation");
+    if (tc) last_contact_times[i] = in.f64("ball last contact time");
+    const std::string which = "ball slot " + std::to_string(i);
+    if (info.generation == 0) in.inconsistent(which, "generation 0", "0 is the null handle's");
+    if (!b.alive) continue;
+    ++live_count;
+    largest_alive = std::max(largest_alive, b.radius);
+    const bool immovable = info.mass == kImmovable;
+    if (!finite(b.position) || !finite(b.velocity) || !(b.local_time <= time) ||
+        !std::isfinite(b.local_time) || !(b.radius > 0.0 && std::isfinite(b.radius)) ||
+        !(immovable ? b.inverse_mass == 0.0
+                    : info.mass > 0.0 && std::isfinite(info.mass) && b.inverse_mass > 0.0 &&
+                          std::isfinite(b.inverse_mass)) ||
+        !(info.restitution >= 0.0 && info.restitution <= 1.0) ||
+        (tc && std::isnan(last_contact_times[i]))) {
+      in.inconsistent(which, "position " + vector_text(b.position),
+                      "a live ball has finite motion no later than the world's time, a positive "
+                      "radius, a valid mass and restitution");
+    }
+  }
+  if (!(largest_radius >= largest_alive && std::isfinite(largest_radius))) {
+    in.inconsistent("largest radius", number_text(largest_radius),
+                    "must be finite and no smaller than any live ball's");
+  }
+  const std::uint32_t free_count = in.u32("free slot count");
+  if (free_count != slots - live_count) {
+    in.inconsistent("free slot count", std::to_string(free_count),
+                    "must equal the dead slots' count " + std::to_string(slots - live_count));
+  }
+  std::vector<bool> listed(slots, false);
+  for (std::uint32_t k = 0; k < free_count; ++k) {
+    const std::uint32_t slot = in.u32("free slot");
+    if (slot >= slots || balls[slot].alive || listed[slot]) {
+      in.inconsistent("free slot", std::to_string(slot), "must name each dead slot once");
+    }
+    listed[slot] = true;
+    free_slots.push_back(slot);
+  }
+
+  if (grid_valid) {
+    load_grid(in);
+  } else {
+    grid.reserve_balls(slots);  // in no cell: remove_ball's erase then has nothing to do
+  }
+  if (events_valid) {
+    queue.reset(slots);
+    for (std::uint32_t i = 0; i < slots; ++i) {
+      detail::Event event;
+      event.owner = i;
+      event.time = in.f64("event time");
+      const std::uint8_t kind = in.u8("event kind");
+      event.partner = in.u32("event partner");
+      event.partner_version = in.u32("event partner version");
+      const std::uint32_t partners = kind == 0 ? slots : (kind == 1 ? wall_count : 4);
+      if (kind > 2 || event.partner >= partners || (kind == 0 && event.partner == i) ||
+          std::isnan(event.time) || event.time == -std::numeric_limits<double>::infinity()) {
+        in.inconsistent("event of ball slot " + std::to_string(i), number_text(event.time),
+                        "kind, partner or time out of range");
+      }
+      event.kind = static_cast<detail::EventKind>(kind);
+      queue.set(i, event);
+    }
+  }
+  if (in.remaining() != 0) {
+    in.inconsistent("payload", std::to_string(in.remaining()) + " bytes", "left over at the end");
+  }
+}
+
+void World::Impl::load_grid(ByteReader& in) {
+  const Vec2 lower = in.vec2("grid lower");
+  const Vec2 cell = in.vec2("grid cell size");
+  const std::int32_t nx = in.i32("grid columns");
+  const std::int32_t ny = in.i32("grid rows");
+  const auto slots = static_cast<std::uint32_t>(balls.size());
+  // A grid never has more cells than wanted_cell_size allows (4 a ball, at least 1024), give or
+  // take the rounding of the cell count; this bound keeps a damaged file from allocating more.
+  const double most_cells = 2.0 * std::max(1024.0, 4.0 * (static_cast<double>(slots) + 1.0)) + 9;
+  if (!finite(lower) || !finite(cell) || !(cell.x > 0.0 && cell.y > 0.0) || nx < 1 || ny < 1 ||
+      static_cast<double>(nx) * static_cast<double>(ny) > most_cells) {
+    in.inconsistent("grid", std::to_string(nx) + "x" + std::to_string(ny),
+                    "a grid has finite positive cells and at most " +
+                        detail::number_text(most_cells) + " of them");
+  }
+  grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, slots);
+  const std::int32_t cells = nx * ny;
+  std::vector<std::int32_t> cell_of(slots);
+  for (std::uint32_t i = 0; i < slots; ++i) {
+    cell_of[i] = in.i32("ball cell");
+    const bool fits = balls[i].alive ? cell_of[i] >= 0 && cell_of[i] < cells : cell_of[i] == -1;
+    if (!fits) {
+      in.inconsistent("cell of ball slot " + std::to_string(i), std::to_string(cell_of[i]),
+                      "a live ball lies in a grid cell, a dead one in none");
+    }
+  }
+  // The cells' lists, walked in cell order: reinserted backwards, since insert puts a ball first.
+  std::vector<std::uint32_t> order(live_count);
+  std::vector<bool> seen(slots, false);
+  for (std::size_t k = 0; k < live_count; ++k) {
+    order[k] = in.u32("grid order");
+    const std::uint32_t ball = order[k];
+    if (ball >= slots || !balls[ball].alive || seen[ball] ||
+        (k > 0 && cell_of[ball] < cell_of[order[k - 1]])) {
+      in.inconsistent("grid order", std::to_string(ball), "must list each live ball once, by cell");
+    }
+    seen[ball] = true;
+  }
+  for (std::size_t k = order.size(); k-- > 0;) grid.insert(order[k], cell_of[order[k]]);
+  std::vector<Vec2> wall_lower(walls.size());
+  std::vector<Vec2> wall_upper(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
+  }
+  grid.set_walls(wall_lower, wall_upper);
+}
+
+World World::load(std::istream& in) {
+  constexpr const char* kFunction = "World::load";
+  const std::string payload = read_payload(kFunction, "in", in);
+  ByteReader reader(kFunction, payload);
+  World world;
+  world.impl_->load_payload(reader);
+  return world;
+}
+
+World World::load(const std::filesystem::path& path) {
+  constexpr const char* kFunction = "World::load";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InvalidArgument(kFunction, "path", path.string(),
+                          std::string("cannot open it: ") + std::strerror(errno));
+  }
+  const std::string payload = read_payload(kFunction, "path " + path.string(), in);
+  ByteReader reader(kFunction, payload);
+  World world;
+  world.impl_->load_payload(reader);
+  return world;
+}
+
+}  // namespace carom

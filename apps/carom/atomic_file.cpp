@@ -35,6 +35,7 @@ std::optional<std::string> write_file_atomically(const std::string& path,
 }
 
 std::optional<std::string> check_writable(const std::string& path) {
+  if (path.empty()) return "the file name is empty";
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) return path + " is a folder";
   const std::string temporary = path + ".tmp";

@@ -24,7 +24,6 @@
 #include "scene_svg.hpp"
 #include "trail_recorder.hpp"
 #include "usage_error.hpp"
-#include "writable_path.hpp"
 
 namespace carom::cli {
 namespace {
@@ -176,10 +175,10 @@ void check_outputs(const RenderOptions& o, RenderRequest& r) {
                        "apt-get install ffmpeg)");
     }
     r.ffmpeg = *ffmpeg;
-    if (auto error = check_output_path(o.animate)) throw UsageError("--animate", o.animate, *error);
+    if (auto error = check_writable(o.animate)) throw UsageError("--animate", o.animate, *error);
   }
   if (!o.out.empty()) {
-    if (auto error = check_output_path(o.out)) throw UsageError("--out", o.out, *error);
+    if (auto error = check_writable(o.out)) throw UsageError("--out", o.out, *error);
   }
 }
 

@@ -45,8 +45,8 @@ std::string energy_unit(const SceneUnits& u) {
   return u.mass + "·" + u.length + "²/" + u.time + "²";
 }
 
-PlotSpec energy_plot(const Scene& scene, const Run& run) {
-  PlotSeries series{"kinetic energy", "#1f4e9c", {}, false};
+TimePlotSpec energy_plot(const Scene& scene, const Run& run) {
+  TimePlotSeries series{"kinetic energy", "#1f4e9c", {}, false};
   const double e0 = run.samples.front().energy;
   double drift = 0.0;
   for (const Sample& s : run.samples) {
@@ -64,10 +64,10 @@ PlotSpec energy_plot(const Scene& scene, const Run& run) {
           true};
 }
 
-PlotSpec momentum_plot(const Scene& scene, const Run& run) {
-  PlotSeries x{"x", "#c03030", {}, false};
-  PlotSeries y{"y", "#2060c0", {}, false};
-  PlotSeries size{"length |p|", "#202020", {}, false};
+TimePlotSpec momentum_plot(const Scene& scene, const Run& run) {
+  TimePlotSeries x{"x", "#c03030", {}, false};
+  TimePlotSeries y{"y", "#2060c0", {}, false};
+  TimePlotSeries size{"length |p|", "#202020", {}, false};
   double drift = 0.0;
   const Vec2 p0 = run.samples.front().momentum;
   for (const Sample& s : run.samples) {
@@ -84,7 +84,7 @@ PlotSpec momentum_plot(const Scene& scene, const Run& run) {
           {x, y, size}};
 }
 
-PlotSpec rate_plot(const Scene& scene, const Run& run, double until) {
+TimePlotSpec rate_plot(const Scene& scene, const Run& run, double until) {
   const double width = until / kRateBins;
   std::vector<double> ball_ball(kRateBins, 0.0);
   std::vector<double> ball_wall(kRateBins, 0.0);
@@ -105,14 +105,14 @@ PlotSpec rate_plot(const Scene& scene, const Run& run, double until) {
     ++pocket_contacts;
   }
   const auto series = [&](std::string name, std::string colour, const std::vector<double>& n) {
-    PlotSeries s{std::move(name), std::move(colour), {}, true};
+    TimePlotSeries s{std::move(name), std::move(colour), {}, true};
     for (int i = 0; i < kRateBins; ++i)
       s.points.push_back({i * width, n[static_cast<std::size_t>(i)] / width});
     s.points.push_back({until, n.back() / width});
     return s;
   };
-  std::vector<PlotSeries> all{series("ball–ball", "#c03030", ball_ball),
-                              series("ball–wall", "#2060c0", ball_wall)};
+  std::vector<TimePlotSeries> all{series("ball–ball", "#c03030", ball_ball),
+                                  series("ball–wall", "#2060c0", ball_wall)};
   if (pocket_contacts > 0) all.push_back(series("potted", "#202020", potted));
   return {"Collisions per unit time",
           std::to_string(run.contacts.size()) +
@@ -129,7 +129,7 @@ PlotSpec rate_plot(const Scene& scene, const Run& run, double until) {
 
 std::string render_plot(const Scene& scene, PlotKind kind, double until, const std::string& title) {
   const Run run = run_scene(scene, until);
-  PlotSpec spec;
+  TimePlotSpec spec;
   switch (kind) {
     case PlotKind::energy:
       spec = energy_plot(scene, run);

@@ -37,9 +37,9 @@ struct Range {
   [[nodiscard]] bool empty() const { return !(low <= high); }
 };
 
-Range y_range(const PlotSpec& spec) {
+Range y_range(const TimePlotSpec& spec) {
   Range r;
-  for (const PlotSeries& s : spec.series) {
+  for (const TimePlotSeries& s : spec.series) {
     for (const Vec2 p : s.points) r.add(p.y);
   }
   if (r.empty()) return {0.0, 1.0};
@@ -78,9 +78,9 @@ std::vector<double> round_ticks(double low, double high, int count) {
   return ticks;
 }
 
-std::string plot_svg(const PlotSpec& spec) {
+std::string plot_svg(const TimePlotSpec& spec) {
   Range xr;
-  for (const PlotSeries& s : spec.series) {
+  for (const TimePlotSeries& s : spec.series) {
     for (const Vec2 p : s.points) xr.add(p.x);
   }
   if (xr.empty() || !(xr.high > xr.low))
@@ -121,7 +121,7 @@ std::string plot_svg(const PlotSpec& spec) {
   svg_text(body, {0.0, 0.0}, TextAnchor::kMiddle, kFontSize, false, spec.y_label);
   body += "</g>\n";
 
-  for (const PlotSeries& s : spec.series) {
+  for (const TimePlotSeries& s : spec.series) {
     std::vector<Vec2> screen;
     for (std::size_t i = 0; i < s.points.size(); ++i) {
       if (s.steps && i > 0) screen.push_back(at({s.points[i].x, s.points[i - 1].y}));
@@ -131,7 +131,7 @@ std::string plot_svg(const PlotSpec& spec) {
   }
   // The legend, top right inside the plot.
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
-    const PlotSeries& s = spec.series[i];
+    const TimePlotSeries& s = spec.series[i];
     const double y = kTop + kLegendRow * (static_cast<double>(i) + 1.0);
     const double x = kLeft + plot_w - 12.0 * kFontSize;
     svg_line(body, {x, y - 0.3 * kFontSize}, {x + kLegendLine, y - 0.3 * kFontSize},

@@ -8,7 +8,7 @@
 
 namespace carom::cli {
 
-struct PlotSeries {
+struct TimePlotSeries {
   std::string name;          // in the legend
   std::string colour;        // any SVG colour
   std::vector<Vec2> points;  // (x, y), x increasing
@@ -16,12 +16,12 @@ struct PlotSeries {
   bool steps = false;
 };
 
-struct PlotSpec {
+struct TimePlotSpec {
   std::string title;
   std::string subtitle;
   std::string x_label;
   std::string y_label;
-  std::vector<PlotSeries> series;
+  std::vector<TimePlotSeries> series;
   bool y_from_zero = false;  // the y axis starts at 0 (or below, for negative values)
   // A y range narrower than this share of the largest |y| is widened to it around its middle,
   // so a conserved quantity shows as a flat line rather than as its rounding noise magnified.
@@ -29,7 +29,7 @@ struct PlotSpec {
 };
 
 // The plot with axes, ticks at round numbers, a grid and a legend.
-[[nodiscard]] std::string plot_svg(const PlotSpec& spec);
+[[nodiscard]] std::string plot_svg(const TimePlotSpec& spec);
 
 // Tick positions at round numbers (1, 2 or 5 times a power of ten) covering [low, high], about
 // `count` of them.

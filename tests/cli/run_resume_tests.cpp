@@ -96,6 +96,52 @@ TEST(RunResume, CollisionsRunResumedFromACheckpointEndsBitIdentical) {
   EXPECT_EQ(nlohmann::json::parse(resumed.out)["collisions"], 6000);
 }
 
+TEST(RunResume, StepsRunResumedFromACheckpointEndsBitIdentical) {
+  const ScratchDir dir;
+  const std::string checkpoint = (dir / "box.ckpt").string();
+  // 40 steps of 0.5 with checkpoints every 8: the last two at t = 16 and t = 20 (the end).
+  const ToolRun first =
+      run_carom({"run", example("box-of-1000.json"), "--steps", "40", "--dt", "0.5", "--checkpoint",
+                 checkpoint, "--checkpoint-every", "8", "--save", (dir / "first.json").string(),
+                 "--events", (dir / "first.jsonl").string(), "--quiet"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const ToolRun resumed = run_carom({"run", "--resume", checkpoint + ".prev", "--steps", "40",
+                                     "--dt", "0.5", "--save", (dir / "resumed.json").string(),
+                                     "--events", (dir / "resumed.jsonl").string(), "--quiet"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(read_file(dir / "resumed.json"), read_file(dir / "first.json"));
+  const std::string first_events = read_file(dir / "first.jsonl");
+  const std::string resumed_events = read_file(dir / "resumed.jsonl");
+  EXPECT_GT(line_count(resumed_events), 1000U);
+  EXPECT_GT(line_count(first_events), line_count(resumed_events) + 1000U);
+  EXPECT_EQ(first_events.substr(first_events.size() - resumed_events.size()), resumed_events);
+}
+
+// Pockets end a world's run at each pocket contact (a stop condition World::save leaves out);
+// balls potted before and after the checkpoint.
+TEST(RunResume, BilliardsWithPocketsResumedEndsBitIdentical) {
+  const ScratchDir dir;
+  const std::string checkpoint = (dir / "billiards.ckpt").string();
+  const ToolRun first =
+      run_carom({"run", example("billiards.json"), "--until", "30", "--checkpoint", checkpoint,
+                 "--checkpoint-every", "10", "--save", (dir / "first.json").string(), "--events",
+                 (dir / "first.jsonl").string(), "--quiet"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const ToolRun resumed = run_carom({"run", "--resume", checkpoint + ".prev", "--until", "30",
+                                     "--save", (dir / "resumed.json").string(), "--events",
+                                     (dir / "resumed.jsonl").string(), "--quiet"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const std::string first_events = read_file(dir / "first.jsonl");
+  const std::string resumed_events = read_file(dir / "resumed.jsonl");
+  // Balls potted before t = 20 and after it (the break pots several; one more falls at 27.4).
+  ASSERT_GT(resumed_events.size(), 0U);
+  const std::string before = first_events.substr(0, first_events.size() - resumed_events.size());
+  EXPECT_THAT(before, HasSubstr("\"potted\""));
+  EXPECT_THAT(resumed_events, HasSubstr("\"potted\""));
+  EXPECT_EQ(first_events.substr(first_events.size() - resumed_events.size()), resumed_events);
+  EXPECT_EQ(read_file(dir / "resumed.json"), read_file(dir / "first.json"));
+}
+
 TEST(RunResume, CheckpointsRotateToPrev) {
   const UntilRuns runs;
   ASSERT_EQ(runs.first.exit_code, 0) << runs.first.err;

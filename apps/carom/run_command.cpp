@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include "option_value.hpp"
 #include "progress_bar.hpp"
 #include "readable_number.hpp"
+#include "run_checkpoint.hpp"
 #include "run_outputs.hpp"
 #include "run_report.hpp"
 #include "usage_error.hpp"
@@ -41,6 +43,9 @@ struct RunOptions {
   std::string every;
   std::string events;
   std::string save;
+  std::string checkpoint;
+  std::string checkpoint_every;
+  std::string resume;
   bool stats = false;
   bool json = false;
   bool quiet = false;
@@ -55,6 +60,7 @@ struct RunPlan {
   double dt = 0.0;
   std::uint64_t collisions = 0;
   std::optional<double> every;
+  std::optional<double> checkpoint_every;
   std::optional<FrameFormat> frame_format;
 };
 
@@ -79,6 +85,10 @@ double parse_positive(std::string_view option, std::string_view text) {
 
 RunPlan parse(const RunOptions& o) {
   RunPlan plan;
+  if (o.scene.empty() == o.resume.empty()) {
+    throw UsageError("SCENE/--resume", "",
+                     "give a scene file to run, or --resume FILE to continue from a checkpoint");
+  }
   const int modes = static_cast<int>(!o.until.empty()) + static_cast<int>(!o.steps.empty()) +
                     static_cast<int>(!o.collisions.empty());
   if (modes != 1) {
@@ -117,9 +127,19 @@ RunPlan parse(const RunOptions& o) {
                        "the file name must end in .csv (CSV) or .xyz (extended XYZ)");
     }
   }
+  if (!o.checkpoint_every.empty()) {
+    if (o.checkpoint.empty()) {
+      throw UsageError("--checkpoint-every", o.checkpoint_every,
+                       "--checkpoint-every goes with --checkpoint FILE");
+    }
+    plan.checkpoint_every = parse_positive("--checkpoint-every", o.checkpoint_every);
+  }
   // Every output is checked before any work, and no two may be the same file.
   const std::vector<std::pair<const char*, const std::string*>> outputs{
-      {"--frames", &o.frames}, {"--events", &o.events}, {"--save", &o.save}};
+      {"--frames", &o.frames},
+      {"--events", &o.events},
+      {"--save", &o.save},
+      {"--checkpoint", &o.checkpoint}};
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string& path = *outputs[i].second;
     if (path.empty()) continue;
@@ -154,16 +174,53 @@ std::size_t live_balls(const SceneWorld& built) {
   return count;
 }
 
-// The run itself: advances chunk by chunk, writing frames and events as it goes.
+// The options that decide a run's course, as a user would write them (for a resume that differs).
+std::string plan_text(const RunProgress& p) {
+  std::string text;
+  switch (static_cast<Mode>(p.mode)) {
+    case Mode::until:
+      text = "--until " + exact_number(p.until);
+      break;
+    case Mode::steps:
+      text = "--steps " + std::to_string(p.steps) + " --dt " + exact_number(p.dt);
+      break;
+    case Mode::collisions:
+      text = "--collisions " + std::to_string(p.collisions);
+      break;
+  }
+  if (p.every > 0.0) text += " --every " + exact_number(p.every);
+  if (p.checkpoint_every > 0.0) text += " --checkpoint-every " + exact_number(p.checkpoint_every);
+  return text;
+}
+
+// The plan's part of a run's progress.
+RunProgress plan_progress(const RunPlan& plan) {
+  RunProgress p;
+  p.mode = static_cast<std::uint8_t>(plan.mode);
+  p.until = plan.mode == Mode::until ? plan.until : 0.0;
+  p.steps = plan.steps;
+  p.dt = plan.dt;
+  p.collisions = plan.collisions;
+  p.every = plan.every.value_or(0.0);
+  p.checkpoint_every = plan.checkpoint_every.value_or(0.0);
+  return p;
+}
+
+// The run itself: advances chunk by chunk, writing frames, events and checkpoints as it goes.
+// All its position in the run lives in progress_, so that a run resumed from a checkpoint takes
+// the same chunks, writes frames at the same times and counts on from the same numbers.
 class Runner {
  public:
-  Runner(const RunOptions& options, const RunPlan& plan, SceneWorld& built)
+  Runner(const RunOptions& options, const RunPlan& plan, SceneWorld& built, RunProgress progress,
+         bool resumed)
       : options_(options),
         plan_(plan),
         built_(built),
         directory_(built),
         progress_(!options.quiet),
-        wall_offset_(built.scene.world.boundary == Boundary::box ? 4 : 0) {}
+        wall_offset_(built.scene.world.boundary == Boundary::box ? 4 : 0),
+        state_(std::move(progress)),
+        resumed_(resumed) {}
 
   // Returns what went wrong opening the outputs, or nothing.
   std::optional<std::string> open() {
@@ -180,8 +237,9 @@ class Runner {
 
   // Call while a StopOnInterrupt lives.
   void run(RunOutcome& outcome) {
-    start_ = built_.time();
-    write_frame();
+    start_ = state_.run_start_time;
+    // A resumed run's frame at its start was written by the run that made the checkpoint.
+    if (!resumed_) write_frame();
     switch (plan_.mode) {
       case Mode::until:
         run_until();
@@ -193,18 +251,21 @@ class Runner {
         run_collisions();
         break;
     }
-    if (frames_ && last_frame_time_ != built_.time()) write_frame();
+    if (frames_ && state_.last_frame_time != built_.time()) write_frame();
     progress_.finish();
+    // The end (or the stop) is a checkpoint too, unless the last one already holds it.
+    if (dirty_) checkpoint();
     outcome.interrupted = StopOnInterrupt::requested();
-    outcome.collisions = ball_ball_ + ball_wall_ + potted_;
-    outcome.ball_ball = ball_ball_;
-    outcome.ball_wall = ball_wall_;
-    outcome.potted = potted_;
+    outcome.collisions = state_.ball_ball + state_.ball_wall + state_.potted;
+    outcome.ball_ball = state_.ball_ball;
+    outcome.ball_wall = state_.ball_wall;
+    outcome.potted = state_.potted;
     outcome.frames = frames_ ? frames_->frames() : 0;
   }
 
   // Finishes the files; returns what went wrong, or nothing.
   std::optional<std::string> commit() {
+    if (checkpoint_problem_) return checkpoint_problem_;
     if (frames_) {
       if (auto problem = frames_->commit()) return problem;
     }
@@ -215,32 +276,57 @@ class Runner {
   }
 
  private:
-  static bool stop_requested() { return StopOnInterrupt::requested(); }
+  [[nodiscard]] bool stop_requested() const {
+    return StopOnInterrupt::requested() || checkpoint_problem_.has_value();
+  }
 
   void after_chunk(double fraction) {
     for (const ContactEvent& c : contacts_) {
       const bool pocket = c.kind == ContactKind::ball_ball &&
                           (directory_.pocket_index(c.a) || directory_.pocket_index(c.b));
       if (pocket) {
-        ++potted_;
+        ++state_.potted;
       } else if (c.kind == ContactKind::ball_ball) {
-        ++ball_ball_;
+        ++state_.ball_ball;
       } else {
-        ++ball_wall_;
+        ++state_.ball_wall;
       }
     }
     if (events_) events_->write(contacts_, directory_, built_, wall_offset_);
     contacts_.clear();
+    dirty_ = true;
     const double seconds = seconds_since(clock_start_);
-    const std::uint64_t done = ball_ball_ + ball_wall_ + potted_;
+    const std::uint64_t done =
+        state_.ball_ball + state_.ball_wall + state_.potted - counted_before_;
     progress_.update(fraction, readable(seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0) +
                                    " collisions/s  t=" + readable(built_.time()));
   }
 
   void write_frame() {
-    if (!frames_) return;
-    frames_->write_frame(built_);
-    last_frame_time_ = built_.time();
+    if (frames_) frames_->write_frame(built_);
+    state_.last_frame_time = built_.time();
+  }
+
+  // Writes a checkpoint (with --checkpoint); a failure stops the run and is reported by commit().
+  void checkpoint() {
+    dirty_ = false;
+    if (options_.checkpoint.empty()) return;
+    if (auto problem = write_checkpoint(options_.checkpoint, encode_checkpoint(built_, state_))) {
+      checkpoint_problem_ = "checkpoint: " + *problem;
+    }
+  }
+
+  [[nodiscard]] double checkpoint_time() const {
+    if (!plan_.checkpoint_every) return std::numeric_limits<double>::infinity();
+    return start_ + static_cast<double>(state_.next_checkpoint) * *plan_.checkpoint_every;
+  }
+
+  // For the modes that cannot stop at a time: a checkpoint after the chunk that reaches time
+  // start + k·every (one, however many such times the chunk passed).
+  void checkpoint_if_due() {
+    if (!plan_.checkpoint_every || built_.time() < checkpoint_time()) return;
+    while (checkpoint_time() <= built_.time()) ++state_.next_checkpoint;
+    checkpoint();
   }
 
   void run_until() {
@@ -249,50 +335,59 @@ class Runner {
     const double every = plan_.every.value_or(span / kDefaultFrames);
     // Chunks no longer than a frame interval nor 1/200 of the run, so Ctrl-C is honoured soon.
     const double chunk = std::min(every, span / kChunksPerRun);
-    // Frame k falls at start + k·every; computed from k, never accumulated, so no drift.
-    std::uint64_t next_frame = 1;
-    std::uint64_t next_chunk = 1;
+    // Frame k falls at start + k·every; computed from k, never accumulated, so no drift. The same
+    // for chunks and checkpoints, so a resumed run cuts its chunks where the first run would have.
+    std::uint64_t& next_frame = state_.next_frame;
+    std::uint64_t& next_chunk = state_.next_chunk;
     while (built_.time() < end && !stop_requested()) {
       const double frame_time = start_ + static_cast<double>(next_frame) * every;
       const double chunk_time = start_ + static_cast<double>(next_chunk) * chunk;
-      const double target = std::min({frame_time, chunk_time, end});
+      const double checkpoint_at = checkpoint_time();
+      const double target = std::min({frame_time, chunk_time, checkpoint_at, end});
       // The clock may pass a target by a rounding; a step is never negative.
       step_scene(built_, std::max(0.0, target - built_.time()), &contacts_);
       if (target >= frame_time) {
-        if (frames_) write_frame();
+        write_frame();
         ++next_frame;
       }
       if (target >= chunk_time) ++next_chunk;
       after_chunk(span > 0.0 ? (built_.time() - start_) / span : 1.0);
+      if (target >= checkpoint_at) {
+        ++state_.next_checkpoint;
+        checkpoint();
+      }
       if (target >= end) break;
     }
   }
 
   void run_steps() {
     const double every = plan_.every.value_or(plan_.dt);
-    std::uint64_t next_frame = 1;
-    for (std::uint64_t step = 0; step < plan_.steps && !stop_requested(); ++step) {
+    std::uint64_t& next_frame = state_.next_frame;
+    while (state_.steps_done < plan_.steps && !stop_requested()) {
       step_scene(built_, plan_.dt, &contacts_);
+      ++state_.steps_done;
       // A frame after the step that reaches frame time k·every (to rounding of the steps' sum).
       const double elapsed = built_.time() - start_;
       if (elapsed >= static_cast<double>(next_frame) * every * (1.0 - 1e-12)) {
         write_frame();
         while (static_cast<double>(next_frame) * every * (1.0 - 1e-12) <= elapsed) ++next_frame;
       }
-      after_chunk(static_cast<double>(step + 1) / static_cast<double>(plan_.steps));
+      after_chunk(static_cast<double>(state_.steps_done) / static_cast<double>(plan_.steps));
+      checkpoint_if_due();
     }
   }
 
   void run_collisions() {
     const auto chunk = static_cast<std::uint64_t>(
         std::max(1.0, std::floor(static_cast<double>(plan_.collisions) / kChunksPerRun)));
-    std::uint64_t done = 0;
+    std::uint64_t& done = state_.collisions_done;
     while (done < plan_.collisions && !stop_requested()) {
       const std::uint64_t ask = std::min(chunk, plan_.collisions - done);
       const std::uint64_t got = run_scene_collisions(built_, ask, &contacts_);
       done += got;
       after_chunk(static_cast<double>(done) / static_cast<double>(plan_.collisions));
       if (got < ask) break;  // no contact will ever happen again
+      checkpoint_if_due();
     }
   }
 
@@ -302,39 +397,80 @@ class Runner {
   BallDirectory directory_;
   ProgressBar progress_;
   std::size_t wall_offset_;
+  RunProgress state_;
+  bool resumed_;
+  // Contacts counted before this process started (for the progress bar's rate).
+  std::uint64_t counted_before_ = state_.ball_ball + state_.ball_wall + state_.potted;
+  bool dirty_ = false;  // chunks run since the last checkpoint
+  std::optional<std::string> checkpoint_problem_;
   std::optional<FrameWriter> frames_;
   std::optional<EventWriter> events_;
   std::vector<ContactEvent> contacts_;
-  std::uint64_t ball_ball_ = 0;
-  std::uint64_t ball_wall_ = 0;
-  std::uint64_t potted_ = 0;
   double start_ = 0.0;
-  double last_frame_time_ = 0.0;
   std::chrono::steady_clock::time_point clock_start_ = std::chrono::steady_clock::now();
 };
 
+// The world and progress to run from: the scene built fresh, or a checkpoint read back (and the
+// plan checked against the one it was made with).
+Checkpoint starting_point(const RunOptions& options, RunPlan& plan) {
+  if (options.resume.empty()) {
+    const Scene scene = load_scene(options.scene);
+    Checkpoint start{make_world(scene), plan_progress(plan)};
+    const SceneWorld& built = start.built;
+    RunProgress& p = start.progress;
+    p.run_start_time = built.time();
+    p.balls_at_start = live_balls(built);
+    p.energy_before = built.world.kinetic_energy();
+    p.momentum_before_x = built.world.momentum().x;
+    p.momentum_before_y = built.world.momentum().y;
+    p.movable_mass = movable_mass(built);
+    p.scene_file = options.scene;
+    return start;
+  }
+  Checkpoint start = read_checkpoint(options.resume);
+  // --checkpoint-every cuts the chunks of an --until run, so it carries over unless given.
+  if (!plan.checkpoint_every && start.progress.checkpoint_every > 0.0) {
+    plan.checkpoint_every = start.progress.checkpoint_every;
+  }
+  const RunProgress asked = plan_progress(plan);
+  if (plan_text(asked) != plan_text(start.progress)) {
+    throw UsageError("--resume", options.resume,
+                     "the checkpoint was made by a run with " + plan_text(start.progress) +
+                         "; give the same options to continue it (this run: " + plan_text(asked) +
+                         ")");
+  }
+  return start;
+}
+
 int run(const RunOptions& options) {
-  const RunPlan plan = parse(options);
+  RunPlan plan = parse(options);
   const auto setup_start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene(options.scene);
-  SceneWorld built = make_world(scene);
+  Checkpoint start;
+  try {
+    start = starting_point(options, plan);
+  } catch (const CheckpointError& error) {
+    std::cerr << "carom run: error: " << error.what() << '\n';
+    return kExitUsage;
+  }
+  SceneWorld& built = start.built;
+  const RunProgress& p = start.progress;
   if (plan.mode == Mode::until && plan.until < built.time()) {
     throw UsageError("--until", options.until,
                      "the scene starts at time " + readable(built.time()) +
                          "; --until is the time to run to, not a duration");
   }
   RunOutcome outcome;
-  outcome.scene = options.scene;
+  outcome.scene = p.scene_file;
   outcome.setup_seconds = seconds_since(setup_start);
-  outcome.balls_at_start = live_balls(built);
-  outcome.start_time = built.time();
-  outcome.energy_before = built.world.kinetic_energy();
-  outcome.momentum_before = built.world.momentum();
-  outcome.movable_mass = movable_mass(built);
+  outcome.balls_at_start = p.balls_at_start;
+  outcome.start_time = p.run_start_time;
+  outcome.energy_before = p.energy_before;
+  outcome.momentum_before = {p.momentum_before_x, p.momentum_before_y};
+  outcome.movable_mass = p.movable_mass;
 
   // Ctrl-C from here on stops the run cleanly; before, nothing has been written yet.
   const StopOnInterrupt interrupt;
-  Runner runner(options, plan, built);
+  Runner runner(options, plan, built, start.progress, !options.resume.empty());
   if (const auto problem = runner.open()) {
     std::cerr << "carom run: error: " << *problem << '\n';
     return kExitUsage;
@@ -365,7 +501,7 @@ int run(const RunOptions& options) {
       std::cout << run_text(outcome);
     }
   } else if (!options.quiet) {
-    std::cout << "ran " << options.scene << " from t=" << readable(outcome.start_time)
+    std::cout << "ran " << outcome.scene << " from t=" << readable(outcome.start_time)
               << " to t=" << readable(outcome.end_time) << ": " << outcome.collisions
               << " collisions\n";
   }
@@ -397,6 +533,19 @@ Command add_run_command(CLI::App& app) {
       "                  potted), scene ball indices, wall, point, normal, approach_speed,\n"
       "                  impulse.\n"
       "  --save FILE     the end state as a scene file to continue from.\n"
+      "  --checkpoint FILE  at the end (and on Ctrl-C) and, with --checkpoint-every T,\n"
+      "                  each time T of scene time has passed: the world and the run's\n"
+      "                  progress, written to FILE.tmp, synced and renamed onto FILE; the\n"
+      "                  checkpoint before moves to FILE.prev. --until runs are cut at the\n"
+      "                  checkpoint times; --steps and --collisions runs check after each\n"
+      "                  step or chunk.\n"
+      "  --resume FILE   (instead of SCENE) continue from a checkpoint with the same\n"
+      "                  --until/--steps/--dt/--collisions/--every options: the run ends\n"
+      "                  bit for bit as the run that wrote the checkpoint. --frames and --events "
+      "are new\n"
+      "                  files that hold what happens after the checkpoint; --stats counts\n"
+      "                  and drifts cover the whole run. A damaged checkpoint is refused\n"
+      "                  (exit 2). Details: docs/checkpoints.md.\n"
       "  --stats         collisions, collisions per second, energy and momentum drift,\n"
       "                  wall time (--json: one JSON object).\n"
       "A progress bar is drawn on stderr when it is a terminal (--quiet: none).\n\n"
@@ -404,9 +553,12 @@ Command add_run_command(CLI::App& app) {
       "  carom run examples/billiards.json --until 10 --stats --frames break.csv\n"
       "  carom run examples/periodic-gas.json --collisions 1000000 --stats --json\n"
       "  carom run examples/box-of-1000.json --steps 100 --dt 0.1 --frames box.xyz --save "
-      "end.json");
+      "end.json\n"
+      "  carom run examples/periodic-gas.json --until 1000 --checkpoint gas.ckpt "
+      "--checkpoint-every 50\n"
+      "  carom run --resume gas.ckpt --until 1000 --checkpoint gas.ckpt");
   auto options = std::make_shared<RunOptions>();
-  verb->add_option("SCENE", options->scene, "Scene file (JSON, docs/scenes.md)")->required();
+  verb->add_option("SCENE", options->scene, "Scene file (JSON, docs/scenes.md)");
   verb->add_option("--until", options->until, "Run to this scene time")->type_name("T");
   verb->add_option("--steps", options->steps, "Run this many steps of --dt")->type_name("K");
   verb->add_option("--dt", options->dt, "Length of a step")->type_name("DT");
@@ -417,6 +569,14 @@ Command add_run_command(CLI::App& app) {
   verb->add_option("--events", options->events, "Write every contact to FILE (JSON lines)")
       ->type_name("FILE");
   verb->add_option("--save", options->save, "Write the end state to FILE as a scene")
+      ->type_name("FILE");
+  verb->add_option("--checkpoint", options->checkpoint,
+                   "Write checkpoints to FILE (the one before: FILE.prev)")
+      ->type_name("FILE");
+  verb->add_option("--checkpoint-every", options->checkpoint_every,
+                   "Scene time between checkpoints")
+      ->type_name("T");
+  verb->add_option("--resume", options->resume, "Continue the run a checkpoint was made by")
       ->type_name("FILE");
   verb->add_flag("--stats", options->stats, "Print a summary of the run");
   verb->add_flag("--json", options->json, "With --stats: one JSON object");

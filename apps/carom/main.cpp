@@ -70,8 +70,8 @@ int run_tool(int argc, char** argv) {
   app.footer("Run 'carom VERB --help' for the options of a verb.");
   const std::vector<carom::cli::Command> commands{
       carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
-      carom::cli::add_gas_command(app), carom::cli::add_eos_command(app),
-      carom::cli::add_run_command(app), carom::cli::add_info_command(app),
+      carom::cli::add_gas_command(app),   carom::cli::add_eos_command(app),
+      carom::cli::add_run_command(app),   carom::cli::add_info_command(app),
       carom::cli::add_render_command(app)};
 
   try {

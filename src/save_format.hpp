@@ -3,9 +3,9 @@
 // checksum. The reader throws carom::InvalidArgument naming the field it could not read.
 #pragma once
 
-#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -23,7 +23,13 @@ class ByteWriter {
   void u64(std::uint64_t value) { unsigned_bytes(value, 8); }
   void i32(std::int32_t value) { u32(static_cast<std::uint32_t>(value)); }
   // Raw bits: every double (NaN payloads, -0, infinities) comes back exactly.
-  void f64(double value) { u64(std::bit_cast<std::uint64_t>(value)); }
+  // memcpy rather than std::bit_cast: the libc++ of Debian's emscripten 3.1.6 (the wasm preset)
+  // has no bit_cast yet; for a trivially copyable type the two compile to the same move.
+  void f64(double value) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    u64(bits);
+  }
   void vec2(Vec2 value) {
     f64(value.x);
     f64(value.y);
@@ -53,7 +59,12 @@ class ByteReader {
   [[nodiscard]] std::int32_t i32(const char* field) {
     return static_cast<std::int32_t>(u32(field));
   }
-  [[nodiscard]] double f64(const char* field) { return std::bit_cast<double>(u64(field)); }
+  [[nodiscard]] double f64(const char* field) {
+    const std::uint64_t bits = u64(field);
+    double value = 0.0;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+  }
   [[nodiscard]] Vec2 vec2(const char* field) {
     const double x = f64(field);
     return {x, f64(field)};

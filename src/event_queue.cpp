@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "permute.hpp"
+
 namespace carom::detail {
 
 namespace {
@@ -29,12 +31,16 @@ constexpr double kEventsPerBucket = 2.0;
 void EventQueue::reset(std::uint32_t count) {
   events_.resize(count);
   partner_versions_.assign(count, 0);
-  places_.assign(count, Place::none);
-  link_next_.assign(count, kNone);
-  link_prev_.assign(count, kNone);
   for (std::uint32_t i = 0; i < count; ++i) {
     events_[i] = {kInfinity, i | (static_cast<std::uint32_t>(EventKind::cell_crossing) << 30), 0};
   }
+  clear_places(count);
+}
+
+void EventQueue::clear_places(std::uint32_t count) {
+  places_.assign(count, Place::none);
+  link_next_.assign(count, kNone);
+  link_prev_.assign(count, kNone);
   heap_.clear();
   std::fill(buckets_.begin(), buckets_.end(), kNone);
   overflow_ = kNone;
@@ -42,6 +48,22 @@ void EventQueue::reset(std::uint32_t count) {
   year_open_ = false;
   current_ = 0;
   year_end_ = 0;
+}
+
+void EventQueue::reorder(std::span<const std::uint32_t> order,
+                         std::span<const std::uint32_t> new_place) {
+  const auto count = static_cast<std::uint32_t>(order.size());
+  permute(events_, order);
+  permute(partner_versions_, order);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    Entry& entry = events_[k];
+    if (entry.kind() == EventKind::ball_ball) entry.partner = new_place[entry.partner];
+    entry.owner_and_kind = k | (entry.owner_and_kind & ~(kMaxBalls - 1));
+  }
+  // The structure is rebuilt around the same events: where an event sits in it never changes
+  // which one comes first.
+  clear_places(count);
+  for (std::uint32_t k = 0; k < count; ++k) insert(k);
 }
 
 Event EventQueue::unpack(std::uint32_t owner) const {
@@ -55,29 +77,15 @@ Event EventQueue::unpack(std::uint32_t owner) const {
   return event;
 }
 
-bool EventQueue::before(const Entry& a, const Entry& b) {
-  if (a.time != b.time) return a.time < b.time;
-  if (a.kind() != b.kind()) return a.kind() < b.kind();
-  const std::uint32_t a_owner = a.owner();
-  const std::uint32_t b_owner = b.owner();
-  const bool pair_a = a.kind() == EventKind::ball_ball;
-  const std::uint32_t a_first = pair_a && a.partner < a_owner ? a.partner : a_owner;
-  const std::uint32_t a_second = pair_a && a.partner < a_owner ? a_owner : a.partner;
-  const bool pair_b = b.kind() == EventKind::ball_ball;
-  const std::uint32_t b_first = pair_b && b.partner < b_owner ? b.partner : b_owner;
-  const std::uint32_t b_second = pair_b && b.partner < b_owner ? b_owner : b.partner;
-  if (a_first != b_first) return a_first < b_first;
-  if (a_second != b_second) return a_second < b_second;
-  return a_owner < b_owner;
-}
-
 // Rounding is monotonic, so a later time never gets an earlier bucket: every event of a bucket
 // comes before every event of a later one, and the heap's first is the queue's first.
 std::int64_t EventQueue::bucket_of(double time) const {
   if (inverse_width_ == 0.0) return time <= origin_ ? 0 : kFarBucket;  // a year of one instant
   const double offset = (time - origin_) * inverse_width_;
   if (!(offset < kLastBucket)) return kFarBucket;
-  return static_cast<std::int64_t>(std::floor(offset));
+  // Truncation is the floor for offsets >= 0; a time before the origin (none is queued, but the
+  // function is total) is bucket 0's, like the year's first instant.
+  return offset > 0.0 ? static_cast<std::int64_t>(offset) : 0;
 }
 
 void EventQueue::set(std::uint32_t owner, const Event& event) {
@@ -162,7 +170,7 @@ Event EventQueue::top() {
       heap_push(owner);
     }
   }
-  return unpack(heap_.front());
+  return unpack(heap_.front().owner());
 }
 
 bool EventQueue::open_year() {
@@ -212,48 +220,50 @@ bool EventQueue::open_year() {
 
 void EventQueue::heap_push(std::uint32_t owner) {
   places_[owner] = Place::heap;
-  heap_.push_back(owner);
-  const auto position = static_cast<std::uint32_t>(heap_.size() - 1);
-  heap_place(position, owner);
-  heap_sift_up(position);
+  heap_.push_back(events_[owner]);
+  heap_sift_up(static_cast<std::uint32_t>(heap_.size() - 1));
 }
 
 void EventQueue::heap_remove(std::uint32_t owner) {
   const std::uint32_t position = link_next_[owner];
-  const std::uint32_t last = heap_.back();
+  const Entry last = heap_.back();
   heap_.pop_back();
   places_[owner] = Place::none;
   link_next_[owner] = kNone;
-  if (last == owner) return;
-  heap_place(position, last);
-  heap_sift_up(position);
-  heap_sift_down(link_next_[last]);
+  if (last.owner() == owner) return;
+  heap_[position] = last;
+  // The moved entry goes up or down, never both: up only when it is before its new parent.
+  if (position > 0 && before(last, heap_[(position - 1) / 2])) {
+    heap_sift_up(position);
+  } else {
+    heap_sift_down(position);
+  }
 }
 
 void EventQueue::heap_sift_up(std::uint32_t position) {
-  const std::uint32_t owner = heap_[position];
+  const Entry entry = heap_[position];
   while (position > 0) {
     const std::uint32_t parent = (position - 1) / 2;
-    if (!before(owner, heap_[parent])) break;
+    if (!before(entry, heap_[parent])) break;
     heap_place(position, heap_[parent]);
     position = parent;
   }
-  heap_place(position, owner);
+  heap_place(position, entry);
 }
 
 void EventQueue::heap_sift_down(std::uint32_t position) {
-  const std::uint32_t owner = heap_[position];
+  const Entry entry = heap_[position];
   const auto size = static_cast<std::uint32_t>(heap_.size());
   for (;;) {
     const std::uint32_t left = 2 * position + 1;
     if (left >= size) break;
     const std::uint32_t right = left + 1;
     const std::uint32_t child = right < size && before(heap_[right], heap_[left]) ? right : left;
-    if (!before(heap_[child], owner)) break;
+    if (!before(heap_[child], entry)) break;
     heap_place(position, heap_[child]);
     position = child;
   }
-  heap_place(position, owner);
+  heap_place(position, entry);
 }
 
 }  // namespace carom::detail

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "huge_page_allocator.hpp"
@@ -20,6 +21,13 @@ class EventQueue {
  public:
   // Slots for balls 0 .. count-1, all holding "nothing will happen".
   void reset(std::uint32_t count);
+  // The handle index of the ball at each place, for the order of simultaneous events
+  // (world_event.hpp); the caller keeps the array alive and calls this again after it moves.
+  void use_handles(const std::uint32_t* handles) { handles_ = handles; }
+  // Moves the slots as the engine re-orders its balls: the slot at place order[k] goes to
+  // place k, and every ball named in an event is renamed by new_place. The pending events stay
+  // exactly as they were.
+  void reorder(std::span<const std::uint32_t> order, std::span<const std::uint32_t> new_place);
   void set(std::uint32_t owner, const Event& event);
   [[nodiscard]] Event slot(std::uint32_t owner) const { return unpack(owner); }
   [[nodiscard]] double time_of(std::uint32_t owner) const { return events_[owner].time; }
@@ -41,10 +49,10 @@ class EventQueue {
   enum class Place : std::uint8_t { none, heap, bucket, overflow };
 
   [[nodiscard]] Event unpack(std::uint32_t owner) const;
-  // The order of world_event.hpp's `earlier`, on entries.
-  [[nodiscard]] static bool before(const Entry& a, const Entry& b);
-  [[nodiscard]] bool before(std::uint32_t a, std::uint32_t b) const {
-    return before(events_[a], events_[b]);
+  // The order of world_event.hpp's `earlier`, on entries: the time settles it but for ties.
+  [[nodiscard]] bool before(const Entry& a, const Entry& b) const {
+    if (a.time != b.time) return a.time < b.time;
+    return tie_before(a.kind(), a.owner(), a.partner, b.kind(), b.owner(), b.partner, handles_);
   }
   // The bucket a time falls in, counted from origin_; kFarBucket for times beyond any year.
   [[nodiscard]] std::int64_t bucket_of(double time) const;
@@ -57,12 +65,14 @@ class EventQueue {
   void heap_remove(std::uint32_t owner);
   void heap_sift_up(std::uint32_t position);
   void heap_sift_down(std::uint32_t position);
-  void heap_place(std::uint32_t position, std::uint32_t owner) {
-    heap_[position] = owner;
-    link_next_[owner] = position;  // a heap member's "next" is its heap position
+  void heap_place(std::uint32_t position, const Entry& entry) {
+    heap_[position] = entry;
+    link_next_[entry.owner()] = position;  // a heap member's "next" is its heap position
   }
   // Starts a new year from the overflow list; false when no finite event is left.
   bool open_year();
+  // Empties the heap, the buckets and the lists, keeping events_ and partner_versions_.
+  void clear_places(std::uint32_t count);
 
   // By ball.
   BigVector<Entry> events_;
@@ -71,7 +81,9 @@ class EventQueue {
   BigVector<std::uint32_t> link_next_;  // list successor, or heap position
   BigVector<std::uint32_t> link_prev_;  // list predecessor (kNone at a list's head)
 
-  BigVector<std::uint32_t> heap_;     // owners of the current bucket's events, a binary heap
+  // The current bucket's events, a binary heap of copies (so that sifting compares without
+  // reaching into events_).
+  BigVector<Entry> heap_;
   BigVector<std::uint32_t> buckets_;  // list heads of the year's buckets, by bucket % size
   std::uint32_t overflow_ = 0;        // list head of events beyond the year (kNone: empty)
   std::uint64_t outside_heap_ = 0;    // finite events in buckets or the overflow list
@@ -81,6 +93,7 @@ class EventQueue {
   double origin_ = 0.0;        // the time where bucket 0 starts
   double inverse_width_ = 0.0;
   std::vector<double> scratch_;  // open_year's times (freed after each use)
+  const std::uint32_t* handles_ = nullptr;
 };
 
 }  // namespace carom::detail

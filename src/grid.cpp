@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "permute.hpp"
+
 namespace carom::detail {
 
 void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
@@ -34,6 +36,15 @@ std::int32_t Grid::column_of(double x) const {
 std::int32_t Grid::row_of(double y) const {
   const double c = std::floor((y - lower_.y) / cell_.y);
   return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
+}
+
+void Grid::reorder(std::span<const std::uint32_t> order) {
+  permute(ball_cell_, order);
+  std::fill(head_.begin(), head_.end(), kNoBall);
+  // Backwards, since insert puts a ball first in its cell's list.
+  for (auto k = static_cast<std::uint32_t>(order.size()); k-- > 0;) {
+    if (ball_cell_[k] != kNoBall) insert(k, ball_cell_[k]);
+  }
 }
 
 void Grid::insert(std::uint32_t ball, std::int32_t cell) {

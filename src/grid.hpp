@@ -47,6 +47,10 @@ class Grid {
     return {lower_.x + cell_.x * cx, lower_.y + cell_.y * cy};
   }
 
+  // Renumbers the balls as the world re-orders them: ball order[k] becomes ball k, in the same
+  // cell; each cell's list is rebuilt in ascending order.
+  void reorder(std::span<const std::uint32_t> order);
+
   void insert(std::uint32_t ball, std::int32_t cell);
   void erase(std::uint32_t ball);
   [[nodiscard]] std::int32_t cell_of_ball(std::uint32_t ball) const { return ball_cell_[ball]; }

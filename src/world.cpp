@@ -38,13 +38,15 @@ void validate_ball_def(const char* function, const BallDef& def) {
 
 std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   if (id.is_null()) refuse(function, "id", "null", "must be a ball of this world");
-  if (id.index >= balls.size() || !balls[id.index].alive ||
-      infos[id.index].generation != id.generation) {
+  const std::uint32_t slot =
+      id.index < slot_of_handle.size() ? slot_of_handle[id.index] : std::uint32_t{0};
+  if (id.index >= slot_of_handle.size() || !balls[slot].alive ||
+      infos[slot].generation != id.generation) {
     refuse(function, "id",
            "{" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}",
            "is stale: that ball was removed (or never belonged to this world)");
   }
-  return id.index;
+  return slot;
 }
 
 Vec2 World::Impl::wrap_into_cell(Vec2 p) const {
@@ -149,7 +151,7 @@ BallId World::add_ball(const BallDef& def) {
 
   std::uint32_t slot = 0;
   if (!w.free_slots.empty()) {
-    slot = w.free_slots.back();
+    slot = w.slot_of_handle[w.free_slots.back()];
     w.free_slots.pop_back();
   } else {
     if (w.balls.size() >= detail::EventQueue::kMaxBalls) {
@@ -159,6 +161,8 @@ BallId World::add_ball(const BallDef& def) {
     slot = static_cast<std::uint32_t>(w.balls.size());
     w.balls.emplace_back();
     w.infos.emplace_back();
+    w.handle_of.push_back(slot);  // a new slot's handle index is its own
+    w.slot_of_handle.push_back(slot);
     if (w.def.collapse_time > 0.0) w.last_contact_times.emplace_back();
     w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));
   }
@@ -172,6 +176,7 @@ BallId World::add_ball(const BallDef& def) {
   detail::BallInfo& info = w.infos[slot];
   info.mass = def.mass;
   info.restitution = def.restitution.value_or(w.def.restitution);
+  if (info.restitution != w.def.restitution) w.mixed_restitution = true;
   if (w.def.collapse_time > 0.0) {
     w.last_contact_times[slot] = -std::numeric_limits<double>::infinity();
   }
@@ -193,22 +198,23 @@ void World::remove_ball(BallId id) {
   ++b.version;
   std::uint32_t& generation = w.infos[slot].generation;
   generation = generation == std::numeric_limits<std::uint32_t>::max() ? 1 : generation + 1;
-  w.free_slots.push_back(slot);
+  w.free_slots.push_back(w.handle_of[slot]);
   --w.live_count;
   w.events_valid = false;
 }
 
 bool World::contains(BallId id) const noexcept {
   const Impl& w = *impl_;
-  return !id.is_null() && id.index < w.balls.size() && w.balls[id.index].alive &&
-         w.infos[id.index].generation == id.generation;
+  if (id.is_null() || id.index >= w.slot_of_handle.size()) return false;
+  const std::uint32_t slot = w.slot_of_handle[id.index];
+  return w.balls[slot].alive && w.infos[slot].generation == id.generation;
 }
 
 std::vector<BallId> World::balls() const {
   std::vector<BallId> ids;
   ids.reserve(impl_->live_count);
-  for (std::uint32_t i = 0; i < impl_->balls.size(); ++i) {
-    if (impl_->balls[i].alive) ids.push_back(impl_->id_of(i));
+  for (const std::uint32_t slot : impl_->slot_of_handle) {  // in handle order
+    if (impl_->balls[slot].alive) ids.push_back(impl_->id_of(slot));
   }
   return ids;
 }
@@ -340,8 +346,9 @@ std::uint64_t World::user_data(BallId id) const {
 std::size_t World::ball_count() const noexcept { return impl_->live_count; }
 
 double World::kinetic_energy() const noexcept {
+  // Summed in handle order, so that the rounding does not depend on where balls are stored.
   double energy = 0.0;
-  for (std::size_t i = 0; i < impl_->balls.size(); ++i) {
+  for (const std::uint32_t i : impl_->slot_of_handle) {
     const BallSlot& b = impl_->balls[i];
     const double mass = impl_->infos[i].mass;
     if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * mass * length_squared(b.velocity);
@@ -351,7 +358,7 @@ double World::kinetic_energy() const noexcept {
 
 Vec2 World::momentum() const noexcept {
   Vec2 total;
-  for (std::size_t i = 0; i < impl_->balls.size(); ++i) {
+  for (const std::uint32_t i : impl_->slot_of_handle) {  // in handle order, as kinetic_energy
     const BallSlot& b = impl_->balls[i];
     if (b.alive && b.inverse_mass > 0.0) total += b.velocity * impl_->infos[i].mass;
   }

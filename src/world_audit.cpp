@@ -18,7 +18,8 @@ namespace {
 // maintains; above it, the grid (O(N)).
 constexpr std::size_t kAllPairsAuditBalls = 256;
 
-std::string ball_name(std::uint32_t i) { return "ball " + std::to_string(i); }
+// Balls are named by their handle index (BallId::index), not by where the engine stores them.
+std::string ball_name(std::uint32_t handle) { return "ball " + std::to_string(handle); }
 
 }  // namespace
 
@@ -27,13 +28,13 @@ Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) con
   const Impl& w = *this;
   const detail::BallSlot& a = w.balls[i];
   if (!is_finite(p) || !is_finite(a.velocity)) {
-    return ball_name(i) + " has a non-finite position or velocity";
+    return ball_name(w.handle_of[i]) + " has a non-finite position or velocity";
   }
   if (w.def.boundary == Boundary::box) {
     const double slack = tolerance * a.radius;
     if (p.x - a.radius < w.def.lower.x - slack || p.x + a.radius > w.def.upper.x + slack ||
         p.y - a.radius < w.def.lower.y - slack || p.y + a.radius > w.def.upper.y + slack) {
-      return ball_name(i) + " reaches outside the box";
+      return ball_name(w.handle_of[i]) + " reaches outside the box";
     }
   }
   return std::nullopt;
@@ -45,7 +46,7 @@ Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
   const double radius = w.balls[i].radius;
   const double gap = length(detail::nearest_point(w.walls[k], p) - p);
   if (gap < radius * (1.0 - tolerance)) {
-    return ball_name(i) + " overlaps wall " + std::to_string(k) + " by " +
+    return ball_name(w.handle_of[i]) + " overlaps wall " + std::to_string(k) + " by " +
            detail::number_text(radius - gap);
   }
   return std::nullopt;
@@ -57,8 +58,8 @@ Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
   const double reach = w.balls[i].radius + w.balls[j].radius;
   const double gap = length(w.minimum_image(w.position_at(j, w.time) - p));
   if (gap < reach * (1.0 - tolerance)) {
-    const std::uint32_t low = std::min(i, j);
-    const std::uint32_t high = std::max(i, j);
+    const std::uint32_t low = std::min(w.handle_of[i], w.handle_of[j]);
+    const std::uint32_t high = std::max(w.handle_of[i], w.handle_of[j]);
     return "balls " + std::to_string(low) + " and " + std::to_string(high) + " overlap by " +
            detail::number_text(reach - gap);
   }
@@ -93,7 +94,7 @@ Violation World::Impl::audit_with_grid(double tolerance) const {
     const Vec2 p = w.position_at(i, w.time);
     if (Violation v = audit_ball(i, p, tolerance)) return v;
     const std::int32_t cell = grid.cell_of_ball(i);
-    if (cell == detail::kNoBall) return ball_name(i) + " is in no grid cell";
+    if (cell == detail::kNoBall) return ball_name(w.handle_of[i]) + " is in no grid cell";
     const Vec2 low = grid.cell_lower(cell);
     const Vec2 high = grid.cell_upper(cell);
     // The engine files a ball in its new cell at the computed crossing time, when its centre may
@@ -107,8 +108,8 @@ Violation World::Impl::audit_with_grid(double tolerance) const {
         (p.y >= low.y - slack.y || (outer_x && grid.row(cell) == 0)) &&
         (p.y <= high.y + slack.y || (outer_x && grid.row(cell) + 1 == grid.ny()));
     if (!inside) {
-      return ball_name(i) + " at " + detail::vector_text(p) + " lies outside its grid cell " +
-             std::to_string(cell);
+      return ball_name(w.handle_of[i]) + " at " + detail::vector_text(p) +
+             " lies outside its grid cell " + std::to_string(cell);
     }
     for (const std::uint32_t k : grid.walls(cell)) {
       if (Violation v = audit_wall(i, p, k, tolerance)) return v;

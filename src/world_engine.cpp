@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "circle_crossing.hpp"
+#include "permute.hpp"
 #include "world_impl.hpp"
 
 namespace carom {
@@ -31,6 +32,12 @@ constexpr double kAddCoarseness = 2.0;
 // ... and before a run once it would make them any smaller beyond the floor-rounding of the cell
 // count, so that a run never keeps cells coarser than it needs (a run's re-plan is paid once).
 constexpr double kRunCoarseness = 1.01;
+// The slots are re-ordered by cell (sort_by_cell) once the events since the last time exceed
+// this many per ball (plus a floor, so that small worlds, which fit in cache anyway, are rarely
+// re-ordered). A re-order costs about as much as a few events per ball; in between, balls
+// drift only a few cells from their neighbours in memory.
+constexpr std::uint64_t kSortEvents = 8;
+constexpr std::uint64_t kSortMinEvents = 1 << 16;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
@@ -131,6 +138,40 @@ bool World::Impl::grid_too_coarse(std::size_t ball_total, double coarseness) con
   return now.x > coarseness * planned_x || now.y > coarseness * planned_y;
 }
 
+// Slot k takes the ball of slot order[k]: the live balls cell by cell (each cell's list in its
+// order), then the dead slots. Every array indexed by slot follows; handles do not change, and
+// since events are ordered by handle (world_event.hpp) and sums are taken in handle order, no
+// result depends on the new order.
+void World::Impl::sort_by_cell() {
+  events_since_sort = 0;
+  if (!grid_valid) return;
+  const auto slots = static_cast<std::uint32_t>(balls.size());
+  std::vector<std::uint32_t> order;
+  order.reserve(slots);
+  const std::int32_t cells = grid.nx() * grid.ny();
+  for (std::int32_t c = 0; c < cells; ++c) {
+    for (std::int32_t j = grid.first_ball(c); j != detail::kNoBall;
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      order.push_back(static_cast<std::uint32_t>(j));
+    }
+  }
+  for (std::uint32_t i = 0; i < slots; ++i) {
+    if (!balls[i].alive) order.push_back(i);
+  }
+  std::vector<std::uint32_t> new_slot(slots);
+  for (std::uint32_t k = 0; k < slots; ++k) new_slot[order[k]] = k;
+  detail::permute(balls, order);
+  detail::permute(infos, order);
+  detail::permute(handle_of, order);
+  if (!last_contact_times.empty()) detail::permute(last_contact_times, order);
+  for (std::uint32_t k = 0; k < slots; ++k) slot_of_handle[handle_of[k]] = k;
+  grid.reorder(order);
+  if (events_valid) {
+    queue.use_handles(handle_of.data());
+    queue.reorder(order, new_slot);
+  }
+}
+
 // ---- prediction ---------------------------------------------------------------------------
 
 void World::Impl::advance(std::uint32_t ball, double t) {
@@ -149,6 +190,7 @@ void World::Impl::synchronize(double t) {
 void World::Impl::predict_all() {
   synchronize(time);  // prediction reads each ball's record as being at the world's time
   queue.reset(static_cast<std::uint32_t>(balls.size()));
+  queue.use_handles(handle_of.data());
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive) predict(i);
   }
@@ -201,7 +243,7 @@ void World::Impl::predict(std::uint32_t ball) {
     candidate.kind = EventKind::ball_wall;
     candidate.owner = ball;
     candidate.partner = w;
-    if (detail::earlier(candidate, best)) best = candidate;
+    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
   }
 
   // Balls in the neighbouring cells.
@@ -223,14 +265,16 @@ void World::Impl::predict(std::uint32_t ball) {
       candidate.owner = ball;
       candidate.partner = other;
       candidate.partner_version = o.version;
-      if (detail::earlier(candidate, best)) best = candidate;
+      if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
       // Mirroring (docs/world.md): the time alone settles it unless the times are equal.
       if (candidate.time > queue.time_of(other)) continue;
       Event mirrored = candidate;
       mirrored.owner = other;
       mirrored.partner = ball;
       mirrored.partner_version = b.version;
-      if (detail::earlier(mirrored, queue.slot(other))) queue.set(other, mirrored);
+      if (detail::earlier(mirrored, queue.slot(other), handle_of.data())) {
+        queue.set(other, mirrored);
+      }
     }
   });
   queue.set(ball, best);
@@ -243,6 +287,7 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   stopped = false;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
   if (!events_valid) predict_all();
+  queue.use_handles(handle_of.data());  // add_ball may have moved the array
   std::uint64_t resolved = 0;
   // Without an end time, a run must notice when contacts are over for good (two balls flying
   // apart cross cells for ever). After a stretch of events without a contact it tries to prove
@@ -250,6 +295,7 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   std::uint64_t without_contact = 0;
   std::uint64_t next_proof = std::max<std::uint64_t>(kEventsBeforeProof, 2 * live_count);
   for (;;) {
+    if (++events_since_sort > kSortEvents * live_count + kSortMinEvents) sort_by_cell();
     const Event event = queue.top();
     if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;
@@ -304,6 +350,7 @@ double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t)
       (last_contact_times[i] > recent || last_contact_times[j] > recent)) {
     return 1.0;
   }
+  if (!mixed_restitution) return def.restitution;
   return std::min(infos[i].restitution, infos[j].restitution);
 }
 
@@ -325,18 +372,7 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
       last_contact_times[i] = t;
       last_contact_times[j] = t;
     }
-    const bool a_first = i < j;
-    ContactEvent contact;
-    contact.time = t;
-    contact.kind = ContactKind::ball_ball;
-    contact.a = id_of(a_first ? i : j);
-    contact.b = id_of(a_first ? j : i);
-    contact.normal = a_first ? normal : -normal;
-    const double reach = a.radius + b.radius;
-    contact.point = a.position + between * (a.radius / reach);
-    contact.approach_speed = approach;
-    contact.impulse = impulse;
-    record(contact);
+    if (contact_wanted()) record_ball_ball(i, j, t, between, normal, approach, impulse);
     resolved = true;
   }
   ++a.version;
@@ -344,6 +380,24 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   predict(i);
   predict(j);
   return resolved;
+}
+
+void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between,
+                                   Vec2 normal, double approach, double impulse) {
+  const BallSlot& a = balls[i];
+  const BallSlot& b = balls[j];
+  const bool a_first = handle_before(i, j);  // the pair in handle order, as the docs promise
+  ContactEvent contact;
+  contact.time = t;
+  contact.kind = ContactKind::ball_ball;
+  contact.a = id_of(a_first ? i : j);
+  contact.b = id_of(a_first ? j : i);
+  contact.normal = a_first ? normal : -normal;
+  const double reach = a.radius + b.radius;
+  contact.point = a.position + between * (a.radius / reach);
+  contact.approach_speed = approach;
+  contact.impulse = impulse;
+  record(contact);
 }
 
 bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t) {
@@ -360,7 +414,7 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
     const double restitution =
         def.collapse_time > 0.0 && last_contact_times[i] > t - def.collapse_time
             ? 1.0
-            : infos[i].restitution;
+            : restitution_of(i);
     const double speed_change = (1.0 + restitution) * approach;
     a.velocity -= normal * speed_change;
     if (def.collapse_time > 0.0) last_contact_times[i] = t;

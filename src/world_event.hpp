@@ -25,20 +25,36 @@ struct Event {
   std::uint32_t partner_version = 0;
 };
 
-// Time, then kind, then the ids (for two balls the pair in ascending order, then the owner), so
-// that simultaneous events are processed in one documented, deterministic order.
-[[nodiscard]] inline bool earlier(const Event& a, const Event& b) noexcept {
-  if (a.time != b.time) return a.time < b.time;
-  if (a.kind != b.kind) return a.kind < b.kind;
-  const bool pair_a = a.kind == EventKind::ball_ball;
-  const std::uint32_t a_first = pair_a && a.partner < a.owner ? a.partner : a.owner;
-  const std::uint32_t a_second = pair_a && a.partner < a.owner ? a.owner : a.partner;
-  const bool pair_b = b.kind == EventKind::ball_ball;
-  const std::uint32_t b_first = pair_b && b.partner < b.owner ? b.partner : b.owner;
-  const std::uint32_t b_second = pair_b && b.partner < b.owner ? b.owner : b.partner;
+// Time, then kind, then the balls' handles (for two balls the pair in ascending order, then the
+// owner), so that simultaneous events are processed in one documented, deterministic order.
+// Events name balls by their place in the engine's arrays, which the engine re-orders for
+// locality (World::Impl::sort_by_cell); `handles` maps a place to its ball's handle index, which
+// never changes, so the order of events does not depend on where balls are stored.
+[[nodiscard]] inline bool tie_before(EventKind kind_a, std::uint32_t owner_a,
+                                     std::uint32_t partner_a, EventKind kind_b,
+                                     std::uint32_t owner_b, std::uint32_t partner_b,
+                                     const std::uint32_t* handles) noexcept {
+  if (kind_a != kind_b) return kind_a < kind_b;
+  // A wall's or a side's number is its own key; a ball's is its handle.
+  const std::uint32_t a_owner = handles[owner_a];
+  const std::uint32_t b_owner = handles[owner_b];
+  const bool pair_a = kind_a == EventKind::ball_ball;
+  const bool pair_b = kind_b == EventKind::ball_ball;
+  const std::uint32_t a_partner = pair_a ? handles[partner_a] : partner_a;
+  const std::uint32_t b_partner = pair_b ? handles[partner_b] : partner_b;
+  const std::uint32_t a_first = pair_a && a_partner < a_owner ? a_partner : a_owner;
+  const std::uint32_t a_second = pair_a && a_partner < a_owner ? a_owner : a_partner;
+  const std::uint32_t b_first = pair_b && b_partner < b_owner ? b_partner : b_owner;
+  const std::uint32_t b_second = pair_b && b_partner < b_owner ? b_owner : b_partner;
   if (a_first != b_first) return a_first < b_first;
   if (a_second != b_second) return a_second < b_second;
-  return a.owner < b.owner;
+  return a_owner < b_owner;
+}
+
+[[nodiscard]] inline bool earlier(const Event& a, const Event& b,
+                                  const std::uint32_t* handles) noexcept {
+  if (a.time != b.time) return a.time < b.time;
+  return tie_before(a.kind, a.owner, a.partner, b.kind, b.owner, b.partner, handles);
 }
 
 }  // namespace carom::detail

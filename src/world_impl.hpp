@@ -52,12 +52,17 @@ struct BallInfo {
 
 struct World::Impl {
   WorldDef def;
+  // Balls live in slots, which the engine re-orders by grid cell from time to time so that
+  // neighbours sit near each other in memory (sort_by_cell). A BallId names a handle index,
+  // which never moves: handle_of and slot_of_handle map between the two.
   detail::BigVector<detail::BallSlot> balls;
-  detail::BigVector<detail::BallInfo> infos;  // by slot, beside balls
+  detail::BigVector<detail::BallInfo> infos;        // by slot, beside balls
+  detail::BigVector<std::uint32_t> handle_of;       // by slot
+  detail::BigVector<std::uint32_t> slot_of_handle;  // by handle index
   // By slot, the time of each ball's latest contact: read only by inelastic collapse prevention,
   // so kept (and sized) only when def.collapse_time > 0, saving 8 bytes a ball otherwise.
   std::vector<double> last_contact_times;
-  std::vector<std::uint32_t> free_slots;  // reused last-freed first
+  std::vector<std::uint32_t> free_slots;  // handle indices, reused last-freed first
   std::size_t live_count = 0;
   std::vector<detail::Wall> walls;
   std::uint32_t boundary_walls = 0;  // the box boundary's four walls come first
@@ -70,6 +75,7 @@ struct World::Impl {
 
   double time = 0.0;
   std::uint64_t collisions = 0;
+  std::uint64_t events_since_sort = 0;
   std::vector<ContactEvent> contacts;
   ContactEvent last_contact;  // the latest resolved, recorded or not (for the stop condition)
   std::function<bool(const ContactEvent&)> stop_condition;
@@ -79,10 +85,20 @@ struct World::Impl {
   bool events_valid = false;
   bool record_contacts = true;
   bool stopped = false;
+  // Whether some ball's restitution differs from def.restitution; until then contacts need not
+  // read the balls' infos (a cache miss each in a large world).
+  bool mixed_restitution = false;
 
   // ---- handles ----
   [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
-  [[nodiscard]] BallId id_of(std::uint32_t slot) const { return {slot, infos[slot].generation}; }
+  [[nodiscard]] BallId id_of(std::uint32_t slot) const {
+    return {handle_of[slot], infos[slot].generation};
+  }
+  // Whether slot a's ball comes before slot b's in handle order (the order of ties and of
+  // anything reported per ball).
+  [[nodiscard]] bool handle_before(std::uint32_t a, std::uint32_t b) const {
+    return handle_of[a] < handle_of[b];
+  }
 
   // ---- geometry ----
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
@@ -120,6 +136,11 @@ struct World::Impl {
   [[nodiscard]] std::optional<std::string> audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
                                                       double tolerance) const;
 
+  // Whether anyone reads a contact's details: the contact list or the stop condition.
+  [[nodiscard]] bool contact_wanted() const { return record_contacts || bool(stop_condition); }
+  [[nodiscard]] double restitution_of(std::uint32_t ball) const {
+    return mixed_restitution ? infos[ball].restitution : def.restitution;
+  }
   void record(const ContactEvent& contact) {
     last_contact = contact;
     if (record_contacts) contacts.push_back(contact);
@@ -143,6 +164,8 @@ struct World::Impl {
   [[nodiscard]] double wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
                                         double largest) const;
   void predict_all();
+  // Renumbers the slots cell by cell (docs/world.md, "Memory order"); changes no result.
+  void sort_by_cell();
   void predict(std::uint32_t ball);
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
@@ -153,6 +176,8 @@ struct World::Impl {
   [[nodiscard]] bool no_contact_ever() const;
   bool process(const detail::Event& event);  // true when a contact was resolved
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
+  void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
+                        double approach, double impulse);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
   void cross_cell(std::uint32_t ball, std::uint32_t side, double t);
   [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;

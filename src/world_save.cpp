@@ -137,9 +137,11 @@ std::string World::Impl::save_payload() const {
     }
   }
 
+  // Balls in handle order, every ball named by its handle index: the file does not depend on
+  // where the engine stores balls (sort_by_cell), and a loaded world stores them in this order.
   const auto slots = static_cast<std::uint32_t>(balls.size());
   out.u32(slots);
-  for (std::uint32_t i = 0; i < slots; ++i) {
+  for (const std::uint32_t i : slot_of_handle) {
     const detail::BallSlot& b = balls[i];
     const detail::BallInfo& info = infos[i];
     out.u8(b.alive ? 1 : 0);
@@ -163,25 +165,28 @@ std::string World::Impl::save_payload() const {
     out.vec2(grid.cell_size());
     out.i32(grid.nx());
     out.i32(grid.ny());
-    for (std::uint32_t i = 0; i < slots; ++i) out.i32(balls[i].alive ? grid.cell_of_ball(i) : -1);
+    for (const std::uint32_t i : slot_of_handle) {
+      out.i32(balls[i].alive ? grid.cell_of_ball(i) : -1);
+    }
     // The balls in the order of the cells' lists, so that load rebuilds every list in the same
     // order (prediction's result does not depend on it, but the engine's path then is the same).
     const std::int32_t cells = grid.nx() * grid.ny();
     for (std::int32_t c = 0; c < cells; ++c) {
       for (std::int32_t j = grid.first_ball(c); j != detail::kNoBall;
            j = grid.next_ball(static_cast<std::uint32_t>(j))) {
-        out.u32(static_cast<std::uint32_t>(j));
+        out.u32(handle_of[static_cast<std::uint32_t>(j)]);
       }
     }
   }
   if (events_valid) {
     // Every ball's pending event as predicted, mirrored events and stale ones included: they
     // were computed from earlier positions and cannot be re-derived from the state above.
-    for (std::uint32_t i = 0; i < slots; ++i) {
+    for (const std::uint32_t i : slot_of_handle) {
       const detail::Event event = queue.slot(i);
       out.f64(event.time);
       out.u8(static_cast<std::uint8_t>(event.kind));
-      out.u32(event.partner);
+      out.u32(event.kind == detail::EventKind::ball_ball ? handle_of[event.partner]
+                                                         : event.partner);
       out.u32(event.partner_version);
     }
   }
@@ -286,6 +291,12 @@ void World::Impl::load_payload(ByteReader& in) {
   const bool tc = def.collapse_time > 0.0;
   balls.resize(slots);
   infos.resize(slots);
+  handle_of.resize(slots);
+  slot_of_handle.resize(slots);
+  for (std::uint32_t i = 0; i < slots; ++i) {
+    handle_of[i] = i;  // stored in handle order (save_payload)
+    slot_of_handle[i] = i;
+  }
   if (tc) last_contact_times.resize(slots);
   double largest_alive = 0.0;
   for (std::uint32_t i = 0; i < slots; ++i) {
@@ -300,6 +311,7 @@ void World::Impl::load_payload(ByteReader& in) {
     b.version = in.u32("ball version");
     info.mass = in.f64("ball mass");
     info.restitution = in.f64("ball restitution");
+    if (info.restitution != def.restitution) mixed_restitution = true;
     info.user_data = in.u64("ball user data");
     info.generation = in.u32("ball generation");
     if (tc) last_contact_times[i] = in.f64("ball last contact time");
@@ -347,6 +359,7 @@ void World::Impl::load_payload(ByteReader& in) {
   }
   if (events_valid) {
     queue.reset(slots);
+    queue.use_handles(handle_of.data());
     for (std::uint32_t i = 0; i < slots; ++i) {
       detail::Event event;
       event.owner = i;

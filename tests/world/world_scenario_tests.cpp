@@ -409,5 +409,44 @@ TEST(WorldScenario, NoBallEverLeavesAClosedBox) {
   EXPECT_GT(world.collision_count(), 10'000u);
 }
 
+// ---- ties after the engine re-orders its balls in memory -------------------------------------
+
+// A ball struck from both sides at the same instant: the two contacts tie, and the documented
+// order (world_event.hpp) takes the pair with the lower handles first. The three balls are
+// added right to left, so that the engine's re-order by grid cell (left to right) stores them in
+// the reverse of their handle order; fast "bouncers" in a compartment of their own supply the
+// events that trigger the re-order (over 2^16 of them, world_engine.cpp's kSortMinEvents) before
+// the triple meets. Were ties broken by storage place, (middle, left) would come first.
+TEST(WorldScenario, SimultaneousContactsFollowHandleOrderAfterTheBallsAreReordered) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {100.0, 100.0};
+  World world(def);
+  world.add_box({0.0, 90.0}, {3.0, 93.0});  // the bouncers' compartment
+  const BallId right = world.add_ball(ball_at({70.0, 50.0}, {-1.0, 0.0}));
+  const BallId middle = world.add_ball(ball_at({50.0, 50.0}, {0.0, 0.0}));
+  const BallId left = world.add_ball(ball_at({30.0, 50.0}, {1.0, 0.0}));
+  world.add_ball(ball_at({1.0, 91.5}, {20000.0, 0.0}));
+  world.add_ball(ball_at({2.0, 91.5}, {0.0, 0.0}, 0.4));
+  world.set_contact_recording(true);
+  // The triple meets at t = 19 (gaps of 19 closed at speed 1 from each side).
+  world.run_until(18.9);
+  ASSERT_GT(world.collision_count(), 70000U) << "the bouncers must trigger a re-order first";
+  world.run_until(19.1);
+  const auto in_triple = [&](BallId id) { return id == left || id == middle || id == right; };
+  std::vector<ContactEvent> triple;
+  for (const ContactEvent& c : world.contacts()) {
+    if (c.kind == ContactKind::ball_ball && in_triple(c.a) && in_triple(c.b)) triple.push_back(c);
+  }
+  ASSERT_GE(triple.size(), 2U);
+  EXPECT_EQ(triple[0].time, triple[1].time);  // a true tie
+  EXPECT_EQ(triple[0].a, right);              // handles 0 and 1 first
+  EXPECT_EQ(triple[0].b, middle);
+  EXPECT_EQ(triple[1].a, middle);
+  EXPECT_EQ(triple[1].b, left);
+  EXPECT_FALSE(world.audit().has_value());
+}
+
 }  // namespace
 }  // namespace carom

@@ -25,6 +25,8 @@ constexpr double kBucketsPerEvent = 2.0;
 // n events are about n/m per unit time at the front: a width of kEventsPerBucket·m/n puts about
 // that many events in each bucket there.
 constexpr double kEventsPerBucket = 2.0;
+// open_year estimates the spread of pending times from at most about this many of them.
+constexpr std::size_t kMedianSample = 4096;
 
 }  // namespace
 
@@ -50,11 +52,10 @@ void EventQueue::clear_places(std::uint32_t count) {
   year_end_ = 0;
 }
 
-void EventQueue::reorder(std::span<const std::uint32_t> order,
-                         std::span<const std::uint32_t> new_place) {
-  const auto count = static_cast<std::uint32_t>(order.size());
-  permute(events_, order);
-  permute(partner_versions_, order);
+void EventQueue::reorder(std::span<const std::uint32_t> new_place) {
+  const auto count = static_cast<std::uint32_t>(new_place.size());
+  move_to(events_, new_place);
+  move_to(partner_versions_, new_place);
   for (std::uint32_t k = 0; k < count; ++k) {
     Entry& entry = events_[k];
     if (entry.kind() == EventKind::ball_ball) entry.partner = new_place[entry.partner];
@@ -179,16 +180,20 @@ bool EventQueue::open_year() {
     year_open_ = false;
     return false;
   }
+  // The earliest time, and the median of an evenly spaced sample of the times (every one in a
+  // small queue): the sample keeps the year's planning from needing a copy of every time.
+  const auto count = static_cast<std::size_t>(outside_heap_);
+  const std::size_t stride = count / kMedianSample + 1;
   double earliest = kInfinity;
   scratch_.clear();
-  for (std::uint32_t i = overflow_; i != kNone; i = link_next_[i]) {
+  std::size_t position = 0;
+  for (std::uint32_t i = overflow_; i != kNone; i = link_next_[i], ++position) {
     earliest = std::min(earliest, events_[i].time);
-    scratch_.push_back(events_[i].time);
+    if (position % stride == 0) scratch_.push_back(events_[i].time);
   }
   // The median time ahead of the earliest, robust against a few events far away (which would
   // make a mean, and so the width, huge); for exponentially spread times it is m·ln 2.
-  const std::size_t count = scratch_.size();
-  const auto middle = scratch_.begin() + static_cast<std::ptrdiff_t>(count / 2);
+  const auto middle = scratch_.begin() + static_cast<std::ptrdiff_t>(scratch_.size() / 2);
   std::nth_element(scratch_.begin(), middle, scratch_.end());
   const double mean_ahead = (*middle - earliest) / std::numbers::ln2;
   const double width = kEventsPerBucket * mean_ahead / static_cast<double>(count);
@@ -205,7 +210,6 @@ bool EventQueue::open_year() {
   current_ = 0;
   year_end_ = inverse_width_ == 0.0 ? 1 : static_cast<std::int64_t>(size);
   year_open_ = true;
-  std::vector<double>().swap(scratch_);  // not kept: 8 bytes a ball between years
   std::uint32_t pending = overflow_;
   overflow_ = kNone;
   outside_heap_ = 0;

@@ -24,10 +24,10 @@ class EventQueue {
   // The handle index of the ball at each place, for the order of simultaneous events
   // (world_event.hpp); the caller keeps the array alive and calls this again after it moves.
   void use_handles(const std::uint32_t* handles) { handles_ = handles; }
-  // Moves the slots as the engine re-orders its balls: the slot at place order[k] goes to
-  // place k, and every ball named in an event is renamed by new_place. The pending events stay
-  // exactly as they were.
-  void reorder(std::span<const std::uint32_t> order, std::span<const std::uint32_t> new_place);
+  // Moves the slots as the engine re-orders its balls: ball i's slot goes to new_place[i], and
+  // every ball named in an event is renamed likewise. The pending events stay exactly as they
+  // were.
+  void reorder(std::span<const std::uint32_t> new_place);
   void set(std::uint32_t owner, const Event& event);
   [[nodiscard]] Event slot(std::uint32_t owner) const { return unpack(owner); }
   [[nodiscard]] double time_of(std::uint32_t owner) const { return events_[owner].time; }
@@ -92,7 +92,7 @@ class EventQueue {
   std::int64_t year_end_ = 0;  // the first bucket past the year
   double origin_ = 0.0;        // the time where bucket 0 starts
   double inverse_width_ = 0.0;
-  std::vector<double> scratch_;  // open_year's times (freed after each use)
+  std::vector<double> scratch_;  // open_year's sample of times (kept: at most a few thousand)
   const std::uint32_t* handles_ = nullptr;
 };
 

@@ -38,11 +38,11 @@ std::int32_t Grid::row_of(double y) const {
   return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
 }
 
-void Grid::reorder(std::span<const std::uint32_t> order) {
-  permute(ball_cell_, order);
+void Grid::reorder(std::span<const std::uint32_t> new_index) {
+  move_to(ball_cell_, new_index);
   std::fill(head_.begin(), head_.end(), kNoBall);
   // Backwards, since insert puts a ball first in its cell's list.
-  for (auto k = static_cast<std::uint32_t>(order.size()); k-- > 0;) {
+  for (auto k = static_cast<std::uint32_t>(new_index.size()); k-- > 0;) {
     if (ball_cell_[k] != kNoBall) insert(k, ball_cell_[k]);
   }
 }

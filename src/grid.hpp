@@ -47,9 +47,9 @@ class Grid {
     return {lower_.x + cell_.x * cx, lower_.y + cell_.y * cy};
   }
 
-  // Renumbers the balls as the world re-orders them: ball order[k] becomes ball k, in the same
-  // cell; each cell's list is rebuilt in ascending order.
-  void reorder(std::span<const std::uint32_t> order);
+  // Renumbers the balls as the world re-orders them: ball i becomes ball new_index[i], in the
+  // same cell; each cell's list is rebuilt in ascending order.
+  void reorder(std::span<const std::uint32_t> new_index);
 
   void insert(std::uint32_t ball, std::int32_t cell);
   void erase(std::uint32_t ball);

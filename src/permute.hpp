@@ -8,25 +8,24 @@
 
 namespace carom::detail {
 
-// Rearranges `values` so that the new values[k] is the old values[order[k]] (order is a
-// permutation of 0 .. size-1). In place, cycle by cycle, so that re-ordering a large world's
-// arrays needs no second copy of them (which would raise the process's peak memory).
+// Moves each values[i] to values[destination[i]] (destination is a permutation of
+// 0 .. size-1). In place, cycle by cycle, so that re-ordering a large world's arrays needs no
+// second copy of them (which would raise the process's peak memory).
 template <class Vector>
-void permute(Vector& values, std::span<const std::uint32_t> order) {
-  std::vector<bool> done(order.size(), false);
-  for (std::size_t start = 0; start < order.size(); ++start) {
-    if (done[start]) continue;
-    auto first = std::move(values[start]);
-    std::size_t k = start;
-    for (;;) {
-      done[k] = true;
-      const std::size_t from = order[k];
-      if (from == start) {
-        values[k] = std::move(first);
+void move_to(Vector& values, std::span<const std::uint32_t> destination) {
+  std::vector<bool> moved(destination.size(), false);
+  for (std::size_t start = 0; start < destination.size(); ++start) {
+    if (moved[start]) continue;
+    auto carried = std::move(values[start]);
+    for (std::size_t from = start;;) {
+      moved[from] = true;
+      const std::size_t to = destination[from];
+      if (to == start) {
+        values[start] = std::move(carried);
         break;
       }
-      values[k] = std::move(values[from]);
-      k = from;
+      std::swap(carried, values[to]);
+      from = to;
     }
   }
 }

@@ -145,37 +145,35 @@ bool World::Impl::grid_too_coarse(std::size_t ball_total, double coarseness) con
   return now.x > coarseness * planned_x || now.y > coarseness * planned_y;
 }
 
-// Slot k takes the ball of slot order[k]: the live balls cell by cell (each cell's list in its
-// order), then the dead slots. Every array indexed by slot follows; handles do not change, and
+// The live balls take slots 0, 1, ... cell by cell (each cell's list in its order), the dead
+// slots the rest. Every array indexed by slot follows; handles do not change, and
 // since events are ordered by handle (world_event.hpp) and sums are taken in handle order, no
 // result depends on the new order.
 void World::Impl::sort_by_cell() {
   events_since_sort = 0;
   if (!grid_valid) return;
   const auto slots = static_cast<std::uint32_t>(balls.size());
-  std::vector<std::uint32_t> order;
-  order.reserve(slots);
+  std::vector<std::uint32_t> new_slot(slots);
+  std::uint32_t next = 0;
   const std::int32_t cells = grid.nx() * grid.ny();
   for (std::int32_t c = 0; c < cells; ++c) {
     for (std::int32_t j = grid.first_ball(c); j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
-      order.push_back(static_cast<std::uint32_t>(j));
+      new_slot[static_cast<std::uint32_t>(j)] = next++;
     }
   }
   for (std::uint32_t i = 0; i < slots; ++i) {
-    if (!balls[i].alive) order.push_back(i);
+    if (!balls[i].alive) new_slot[i] = next++;
   }
-  std::vector<std::uint32_t> new_slot(slots);
-  for (std::uint32_t k = 0; k < slots; ++k) new_slot[order[k]] = k;
-  detail::permute(balls, order);
-  detail::permute(infos, order);
-  detail::permute(handle_of, order);
-  if (!last_contact_times.empty()) detail::permute(last_contact_times, order);
+  detail::move_to(balls, new_slot);
+  detail::move_to(infos, new_slot);
+  detail::move_to(handle_of, new_slot);
+  if (!last_contact_times.empty()) detail::move_to(last_contact_times, new_slot);
   for (std::uint32_t k = 0; k < slots; ++k) slot_of_handle[handle_of[k]] = k;
-  grid.reorder(order);
+  grid.reorder(new_slot);
   if (events_valid) {
     queue.use_handles(handle_of.data());
-    queue.reorder(order, new_slot);
+    queue.reorder(new_slot);
   }
 }
 

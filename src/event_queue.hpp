@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,12 @@ class EventQueue {
   static constexpr std::uint32_t kMaxBalls = 1u << 30;
 
  private:
+  static constexpr std::uint32_t kNoEvent = std::numeric_limits<std::uint32_t>::max();  // links
+  static constexpr double kNever = std::numeric_limits<double>::infinity();
+  static constexpr std::int64_t kFarBucket = std::numeric_limits<std::int64_t>::max();
+  // Bucket numbers stay far below 2^62 so that converting them to integers is exact and safe.
+  static constexpr double kLastBucket = 0x1p62;
+
   // An event without its partner's version, 16 bytes.
   struct Entry {
     double time;
@@ -97,3 +104,5 @@ class EventQueue {
 };
 
 }  // namespace carom::detail
+
+#include "event_queue_ops.hpp"  // IWYU pragma: export

@@ -1,0 +1,166 @@
+// carom internal: the event queue's operations on the engine's hot path (set, top, and what they
+// call), defined inline so that the engine's prediction loop can inline them. The rest of the
+// queue (resetting, re-ordering, opening a year) is in event_queue.cpp. Included by
+// event_queue.hpp only.
+#pragma once
+
+#include <cmath>
+
+namespace carom::detail {
+
+inline Event EventQueue::unpack(std::uint32_t owner) const {
+  const Entry& entry = events_[owner];
+  Event event;
+  event.time = entry.time;
+  event.kind = entry.kind();
+  event.owner = owner;
+  event.partner = entry.partner;
+  event.partner_version = partner_versions_[owner];
+  return event;
+}
+
+// Rounding is monotonic, so a later time never gets an earlier bucket: every event of a bucket
+// comes before every event of a later one, and the heap's first is the queue's first.
+inline std::int64_t EventQueue::bucket_of(double time) const {
+  if (inverse_width_ == 0.0) return time <= origin_ ? 0 : kFarBucket;  // a year of one instant
+  const double offset = (time - origin_) * inverse_width_;
+  if (!(offset < kLastBucket)) return kFarBucket;
+  // Truncation is the floor for offsets >= 0; a time before the origin (none is queued, but the
+  // function is total) is bucket 0's, like the year's first instant.
+  return offset > 0.0 ? static_cast<std::int64_t>(offset) : 0;
+}
+
+inline void EventQueue::set(std::uint32_t owner, const Event& event) {
+  remove(owner);
+  events_[owner] = {event.time, owner | (static_cast<std::uint32_t>(event.kind) << 30),
+                    event.partner};
+  partner_versions_[owner] = event.partner_version;
+  insert(owner);
+}
+
+inline void EventQueue::insert(std::uint32_t owner) {
+  const double time = events_[owner].time;
+  if (time == kNever) return;  // Place::none
+  if (!year_open_) {
+    list_push(overflow_, owner, Place::overflow);
+    return;
+  }
+  const std::int64_t bucket = bucket_of(time);
+  if (bucket <= current_) {
+    heap_push(owner);
+  } else if (bucket < year_end_) {
+    const auto index = static_cast<std::size_t>(bucket) & (buckets_.size() - 1);
+    list_push(buckets_[index], owner, Place::bucket);
+  } else {
+    list_push(overflow_, owner, Place::overflow);
+  }
+}
+
+inline void EventQueue::remove(std::uint32_t owner) {
+  switch (places_[owner]) {
+    case Place::none:
+      return;
+    case Place::heap:
+      heap_remove(owner);
+      return;
+    case Place::bucket: {
+      // The bucket is found again from the stored time, by the same computation.
+      const std::int64_t bucket = bucket_of(events_[owner].time);
+      const auto index = static_cast<std::size_t>(bucket) & (buckets_.size() - 1);
+      list_remove(buckets_[index], owner);
+      return;
+    }
+    case Place::overflow:
+      list_remove(overflow_, owner);
+      return;
+  }
+}
+
+inline void EventQueue::list_push(std::uint32_t& head, std::uint32_t owner, Place place) {
+  link_prev_[owner] = kNoEvent;
+  link_next_[owner] = head;
+  if (head != kNoEvent) link_prev_[head] = owner;
+  head = owner;
+  places_[owner] = place;
+  ++outside_heap_;
+}
+
+inline void EventQueue::list_remove(std::uint32_t& head, std::uint32_t owner) {
+  const std::uint32_t before_it = link_prev_[owner];
+  const std::uint32_t after_it = link_next_[owner];
+  if (before_it != kNoEvent) {
+    link_next_[before_it] = after_it;
+  } else {
+    head = after_it;
+  }
+  if (after_it != kNoEvent) link_prev_[after_it] = before_it;
+  places_[owner] = Place::none;
+  --outside_heap_;
+}
+
+inline Event EventQueue::top() {
+  while (heap_.empty()) {
+    if (!year_open_ || current_ + 1 >= year_end_) {
+      if (!open_year()) return Event{};  // nothing finite left
+      continue;
+    }
+    ++current_;
+    auto& head = buckets_[static_cast<std::size_t>(current_) & (buckets_.size() - 1)];
+    while (head != kNoEvent) {
+      const std::uint32_t owner = head;
+      list_remove(head, owner);
+      heap_push(owner);
+    }
+  }
+  return unpack(heap_.front().owner());
+}
+
+inline void EventQueue::heap_push(std::uint32_t owner) {
+  places_[owner] = Place::heap;
+  heap_.push_back(events_[owner]);
+  heap_sift_up(static_cast<std::uint32_t>(heap_.size() - 1));
+}
+
+inline void EventQueue::heap_remove(std::uint32_t owner) {
+  const std::uint32_t position = link_next_[owner];
+  const Entry last = heap_.back();
+  heap_.pop_back();
+  places_[owner] = Place::none;
+  link_next_[owner] = kNoEvent;
+  if (last.owner() == owner) return;
+  heap_[position] = last;
+  // The moved entry goes up or down, never both: up only when it is before its new parent.
+  if (position > 0 && before(last, heap_[(position - 1) / 2])) {
+    heap_sift_up(position);
+  } else {
+    heap_sift_down(position);
+  }
+}
+
+inline void EventQueue::heap_sift_up(std::uint32_t position) {
+  const Entry entry = heap_[position];
+  while (position > 0) {
+    const std::uint32_t parent = (position - 1) / 2;
+    if (!before(entry, heap_[parent])) break;
+    heap_place(position, heap_[parent]);
+    position = parent;
+  }
+  heap_place(position, entry);
+}
+
+inline void EventQueue::heap_sift_down(std::uint32_t position) {
+  const Entry entry = heap_[position];
+  const auto size = static_cast<std::uint32_t>(heap_.size());
+  for (;;) {
+    const std::uint32_t left = 2 * position + 1;
+    if (left >= size) break;
+    const std::uint32_t right = left + 1;
+    const std::uint32_t child = right < size && before(heap_[right], heap_[left]) ? right : left;
+    if (!before(heap_[child], entry)) break;
+    heap_place(position, heap_[child]);
+    position = child;
+  }
+  heap_place(position, entry);
+}
+
+}  // namespace carom::detail

@@ -3,14 +3,20 @@
 // ball). It needs the library alone, so it builds where the tool's dependencies (CLI11, fmt,
 // nlohmann-json) are missing, and its CPU-time rate stays meaningful on a loaded machine.
 //   carom_world_gas_probe N ETA COLLISIONS_PER_BALL [RECORD_CONTACTS=1] [EQUILIBRATE_PER_BALL=2]
+//                         [SHUFFLED=0]
+// SHUFFLED=1 adds the same disks in a random order (as a scene file may list them), so that
+// neighbours are far apart in memory until the engine re-orders its slots.
 // Figures: docs/performance.md, "World (issue 3), second slice".
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <random>
+#include <vector>
 
 #include "hard_disk_setup.hpp"
 
@@ -33,13 +39,33 @@ double seconds_between(std::chrono::steady_clock::time_point a,
   return std::chrono::duration<double>(b - a).count();
 }
 
+// The same balls (positions, velocities, sizes, masses) added to a fresh world in a random order.
+carom::World added_in_random_order(const carom::World& source, double side) {
+  std::vector<carom::BallId> ids = source.balls();
+  std::shuffle(ids.begin(), ids.end(), std::mt19937_64(2));
+  carom::WorldDef def;
+  def.boundary = carom::Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {side, side};
+  carom::World world(def);
+  for (const carom::BallId id : ids) {
+    carom::BallDef ball;
+    ball.position = source.position(id);
+    ball.velocity = source.velocity(id);
+    ball.radius = source.radius(id);
+    ball.mass = source.mass(id);
+    world.add_ball(ball);
+  }
+  return world;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 4) {
     std::fprintf(stderr,
                  "usage: %s N ETA COLLISIONS_PER_BALL [RECORD_CONTACTS=1] "
-                 "[EQUILIBRATE_PER_BALL=2]\n",
+                 "[EQUILIBRATE_PER_BALL=2] [SHUFFLED=0]\n",
                  argv[0]);
     return 2;
   }
@@ -48,6 +74,7 @@ int main(int argc, char** argv) {
   const double per_ball = std::atof(argv[3]);
   const bool record = argc <= 4 || std::atoi(argv[4]) != 0;
   const double equilibrate = argc > 5 ? std::atof(argv[5]) : 2.0;
+  const bool shuffled = argc > 6 && std::atoi(argv[6]) != 0;
   const carom::cli::HardDiskLayout layout = carom::cli::hard_disk_layout(n, eta);
   if (n == 0 || !layout.box_wide_enough() || !layout.disks_fit()) {
     std::fprintf(stderr, "the triangular lattice cannot hold %llu disks at packing %g\n",
@@ -57,6 +84,7 @@ int main(int argc, char** argv) {
   const long resident_before = peak_resident_kib();
   const auto start = std::chrono::steady_clock::now();
   carom::World world = carom::cli::make_hard_disk_world(layout, 1);
+  if (shuffled) world = added_in_random_order(world, layout.side);
   world.set_contact_recording(record);
   const auto set_up = std::chrono::steady_clock::now();
   world.run_collisions(static_cast<std::uint64_t>(equilibrate * static_cast<double>(n)));

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "circle_crossing.hpp"
+#include "pair_batch.hpp"
 #include "permute.hpp"
 #include "world_impl.hpp"
 
@@ -251,13 +252,48 @@ void World::Impl::predict(std::uint32_t ball) {
     if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
   }
 
-  // Balls in the neighbouring cells. Away from the grid's edges the 3×3 block is three runs of
-  // three cells and, in a periodic world, no difference needs the minimum image: neighbours lie
-  // within two cells, under half a period once the grid has five cells per axis (so skipping it
-  // changes no bit). The edge cells take the general path.
+  // Balls in the neighbouring cells, gathered into a batch whose pairs are solved together
+  // (pair_batch.hpp), then each hit considered. Away from the grid's edges the 3×3 block is three
+  // runs of three cells and, in a periodic world, no difference needs the minimum image:
+  // neighbours lie within two cells, under half a period once the grid has five cells per axis
+  // (so skipping it changes no bit). The edge cells take the general path. The lambdas are
+  // inlined by force: each runs several times a prediction, where a call costs as much as its
+  // body.
   const bool movable = b.inverse_mass != 0.0;
-  // Inlined by force: called nine times a prediction, where a call costs as much as the loop.
-  const auto visit_cell = [&](std::int32_t neighbour, auto wraps_here) CAROM_ALWAYS_INLINE {
+  detail::PairBatch batch;
+  const auto consider = [&](std::uint32_t other, double t) CAROM_ALWAYS_INLINE {
+    Event candidate;
+    candidate.time = time + t;
+    candidate.kind = EventKind::ball_ball;
+    candidate.owner = ball;
+    candidate.partner = other;
+    candidate.partner_version = balls[other].version;
+    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
+    // Mirroring (docs/world.md): the time alone settles it unless the times are equal.
+    if (candidate.time > queue.time_of(other)) return;
+    Event mirrored = candidate;
+    mirrored.owner = other;
+    mirrored.partner = ball;
+    mirrored.partner_version = b.version;
+    if (detail::earlier(mirrored, queue.slot(other), handle_of.data())) {
+      queue.set(other, mirrored);
+    }
+  };
+  const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
+    batch.solve(kFarFuture);
+    for (std::size_t k = 0; k < batch.count; ++k) {
+      if (batch.outcome[k] == detail::PairBatch::kMiss) continue;
+      if (batch.outcome[k] == detail::PairBatch::kHit) {
+        consider(batch.other[k], batch.t[k]);
+        continue;
+      }
+      const detail::Crossing crossing = detail::entry_crossing_rescaled(
+          {{batch.sx[k], batch.sy[k]}, {batch.ux[k], batch.uy[k]}, batch.reach[k]}, kFarFuture);
+      if (crossing.found) consider(batch.other[k], crossing.t);
+    }
+    batch.count = 0;
+  };
+  const auto gather = [&](std::int32_t neighbour, auto wraps_here) CAROM_ALWAYS_INLINE {
     for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
@@ -265,26 +301,9 @@ void World::Impl::predict(std::uint32_t ball) {
       const BallSlot& o = balls[other];
       if (!movable && o.inverse_mass == 0.0) continue;  // nothing can respond
       const Vec2 offset = p - position_at(other, time);
-      const Vec2 s = wraps_here ? minimum_image(offset) : offset;
-      const detail::Crossing crossing =
-          detail::entry_crossing(s, v - o.velocity, b.radius + o.radius, kFarFuture);
-      if (!crossing.found) continue;
-      Event candidate;
-      candidate.time = time + crossing.t;
-      candidate.kind = EventKind::ball_ball;
-      candidate.owner = ball;
-      candidate.partner = other;
-      candidate.partner_version = o.version;
-      if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
-      // Mirroring (docs/world.md): the time alone settles it unless the times are equal.
-      if (candidate.time > queue.time_of(other)) continue;
-      Event mirrored = candidate;
-      mirrored.owner = other;
-      mirrored.partner = ball;
-      mirrored.partner_version = b.version;
-      if (detail::earlier(mirrored, queue.slot(other), handle_of.data())) {
-        queue.set(other, mirrored);
-      }
+      batch.push(wraps_here ? minimum_image(offset) : offset, v - o.velocity, b.radius + o.radius,
+                 other);
+      if (batch.full()) solve_batch();
     }
   };
   const bool interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
@@ -292,13 +311,14 @@ void World::Impl::predict(std::uint32_t ball) {
   if (interior) {
     for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
       const std::int32_t first = grid.index(cx - 1, row);
-      for (std::int32_t k = 0; k < 3; ++k) visit_cell(first + k, std::false_type{});
+      for (std::int32_t k = 0; k < 3; ++k) gather(first + k, std::false_type{});
     }
   } else if (def.boundary == Boundary::periodic) {
-    grid.for_each_neighbour(cell, [&](std::int32_t n) { visit_cell(n, std::true_type{}); });
+    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, std::true_type{}); });
   } else {
-    grid.for_each_neighbour(cell, [&](std::int32_t n) { visit_cell(n, std::false_type{}); });
+    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, std::false_type{}); });
   }
+  solve_batch();
   queue.set(ball, best);
 }
 

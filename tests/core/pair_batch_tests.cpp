@@ -1,0 +1,97 @@
+// The world's batched pair solver (src/pair_batch.hpp) against the scalar time of impact it
+// replaces in prediction (circle_crossing.hpp's entry_crossing): the same answer, bit for bit, on
+// random pairs of every scale, including the magnitudes that take the rescaled path, zeros, and
+// pairs already touching.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <random>
+
+#include "circle_crossing.hpp"
+#include "pair_batch.hpp"
+
+namespace carom {
+namespace {
+
+constexpr double kHorizon = std::numeric_limits<double>::max();  // the world's kFarFuture
+
+// A coordinate: mostly ordinary, sometimes zero, tiny or huge (beyond the exact range's window,
+// where the batch must hand the pair to the rescaled path).
+double coordinate(std::mt19937_64& random) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  switch (random() % 8) {
+    case 0:
+      return 0.0;
+    case 1:
+      return unit(random) * 1e-200;
+    case 2:
+      return unit(random) * 1e200;
+    case 3:
+      return unit(random) * 1e-6;
+    default:
+      return unit(random) * 10.0;
+  }
+}
+
+double reach(std::mt19937_64& random) {
+  std::uniform_real_distribution<double> size(0.1, 10.0);
+  switch (random() % 10) {
+    case 0:
+      return 1e-160;
+    case 1:
+      return 1e160;
+    default:
+      return size(random);
+  }
+}
+
+TEST(PairBatch, SolvesEveryPairAsTheScalarEntryCrossing) {
+  std::mt19937_64 random(20261130);
+  detail::PairBatch batch;
+  int hits = 0;
+  int rescaled = 0;
+  int touching = 0;
+  for (int round = 0; round < 4000; ++round) {
+    batch.count = 0;
+    while (!batch.full()) {
+      Vec2 s{coordinate(random), coordinate(random)};
+      const Vec2 u{coordinate(random), coordinate(random)};
+      const double r = reach(random);
+      if (random() % 16 == 0) s = Vec2{r * 0.5, 0.0};  // inside: t = 0 when approaching
+      batch.push(s, u, r, static_cast<std::uint32_t>(batch.count));
+    }
+    batch.solve(kHorizon);
+    for (std::size_t k = 0; k < batch.count; ++k) {
+      const Vec2 s{batch.sx[k], batch.sy[k]};
+      const Vec2 u{batch.ux[k], batch.uy[k]};
+      const detail::Crossing expected = detail::entry_crossing(s, u, batch.reach[k], kHorizon);
+      // What prediction makes of the batch's answer (world_engine.cpp).
+      detail::Crossing got;
+      if (batch.outcome[k] == detail::PairBatch::kHit) {
+        got = {true, batch.t[k]};
+      } else if (batch.outcome[k] == detail::PairBatch::kRescale) {
+        got = detail::entry_crossing_rescaled({s, u, batch.reach[k]}, kHorizon);
+        ++rescaled;
+      }
+      EXPECT_EQ(batch.outcome[k] == detail::PairBatch::kRescale,
+                !detail::in_exact_range(s, u, batch.reach[k]))
+          << "pair " << k << " of round " << round;
+      ASSERT_EQ(got.found, expected.found) << "round " << round << ", pair " << k;
+      if (expected.found) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(got.t), std::bit_cast<std::uint64_t>(expected.t))
+            << "round " << round << ", pair " << k << ": " << got.t << " vs " << expected.t;
+        ++hits;
+        if (expected.t == 0.0) ++touching;
+      }
+    }
+  }
+  // The sample reached every branch: hits, pairs already touching, and the rescaled path.
+  EXPECT_GT(hits, 1000);
+  EXPECT_GT(touching, 100);
+  EXPECT_GT(rescaled, 1000);
+}
+
+}  // namespace
+}  // namespace carom

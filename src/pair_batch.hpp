@@ -49,19 +49,26 @@ struct PairBatch {
   // kRescale, whatever the arithmetic here gave.
   void solve(double horizon) {
     for (std::size_t k = 0; k < count; ++k) {
-      const double b = sx[k] * ux[k] + sy[k] * uy[k];  // dot(s, u)
-      const double ss = sx[k] * sx[k] + sy[k] * sy[k];
-      const double uu = ux[k] * ux[k] + uy[k] * uy[k];
-      const double rr = reach[k] * reach[k];
+      // The lane's values first, so that every test below is on plain locals.
+      const double s_x = sx[k];
+      const double s_y = sy[k];
+      const double u_x = ux[k];
+      const double u_y = uy[k];
+      const double r = reach[k];
+      const double b = s_x * u_x + s_y * u_y;  // dot(s, u)
+      const double ss = s_x * s_x + s_y * s_y;
+      const double uu = u_x * u_x + u_y * u_y;
+      const double rr = r * r;
       const double c = ss - rr;
-      const double h = sx[k] * uy[k] - sy[k] * ux[k];  // cross(s, u)
+      const double h = s_x * u_y - s_y * u_x;  // cross(s, u)
       const double discriminant = uu * rr - h * h;
       const double hit_time = c / (std::sqrt(discriminant) - b);
-      // vector_in_range and square_in_range, on the squares already formed.
-      const bool s_in =
-          ((ss >= kSquareLow) & (ss <= kSquareHigh)) | ((sx[k] == 0.0) & (sy[k] == 0.0));
-      const bool u_in =
-          ((uu >= kSquareLow) & (uu <= kSquareHigh)) | ((ux[k] == 0.0) & (uy[k] == 0.0));
+      // vector_in_range and square_in_range, on the squares already formed; & and | rather than
+      // && and || so that nothing branches.
+      const bool s_zero = (s_x == 0.0) & (s_y == 0.0);
+      const bool u_zero = (u_x == 0.0) & (u_y == 0.0);
+      const bool s_in = ((ss >= kSquareLow) & (ss <= kSquareHigh)) | s_zero;
+      const bool u_in = ((uu >= kSquareLow) & (uu <= kSquareHigh)) | u_zero;
       const bool in_range = s_in & u_in & (rr >= kSquareLow) & (rr <= kSquareHigh);
       const bool inside = c <= 0.0;  // already touching and moving inwards: t = 0
       const bool hit = (b < 0.0) & (inside | ((discriminant > 0.0) & (hit_time <= horizon)));

@@ -171,10 +171,9 @@ BallId World::add_ball(const BallDef& def) {
   b.velocity = def.velocity;
   b.local_time = w.time;
   b.radius = def.radius;
-  b.inverse_mass = def.mass == kImmovable ? 0.0 : 1.0 / def.mass;
+  b.mass = def.mass;
   b.alive = true;
   detail::BallInfo& info = w.infos[slot];
-  info.mass = def.mass;
   info.restitution = def.restitution.value_or(w.def.restitution);
   if (info.restitution != w.def.restitution) w.mixed_restitution = true;
   if (w.def.collapse_time > 0.0) {
@@ -337,7 +336,7 @@ double World::radius(BallId id) const {
   return impl_->balls[impl_->slot_of("World::radius", id)].radius;
 }
 
-double World::mass(BallId id) const { return impl_->infos[impl_->slot_of("World::mass", id)].mass; }
+double World::mass(BallId id) const { return impl_->balls[impl_->slot_of("World::mass", id)].mass; }
 
 std::uint64_t World::user_data(BallId id) const {
   return impl_->infos[impl_->slot_of("World::user_data", id)].user_data;
@@ -350,8 +349,7 @@ double World::kinetic_energy() const noexcept {
   double energy = 0.0;
   for (const std::uint32_t i : impl_->slot_of_handle) {
     const BallSlot& b = impl_->balls[i];
-    const double mass = impl_->infos[i].mass;
-    if (b.alive && b.inverse_mass > 0.0) energy += 0.5 * mass * length_squared(b.velocity);
+    if (b.alive && b.movable()) energy += 0.5 * b.mass * length_squared(b.velocity);
   }
   return energy;
 }
@@ -360,7 +358,7 @@ Vec2 World::momentum() const noexcept {
   Vec2 total;
   for (const std::uint32_t i : impl_->slot_of_handle) {  // in handle order, as kinetic_energy
     const BallSlot& b = impl_->balls[i];
-    if (b.alive && b.inverse_mass > 0.0) total += b.velocity * impl_->infos[i].mass;
+    if (b.alive && b.movable()) total += b.velocity * b.mass;
   }
   return total;
 }

@@ -259,7 +259,7 @@ void World::Impl::predict(std::uint32_t ball) {
   // (so skipping it changes no bit). The edge cells take the general path. The lambdas are
   // inlined by force: each runs several times a prediction, where a call costs as much as its
   // body.
-  const bool movable = b.inverse_mass != 0.0;
+  const bool movable = b.movable();
   detail::PairBatch batch;
   const auto consider = [&](std::uint32_t other, double t) CAROM_ALWAYS_INLINE {
     Event candidate;
@@ -299,7 +299,7 @@ void World::Impl::predict(std::uint32_t ball) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == ball) continue;
       const BallSlot& o = balls[other];
-      if (!movable && o.inverse_mass == 0.0) continue;  // nothing can respond
+      if (!movable && !o.movable()) continue;  // nothing can respond
       const Vec2 offset = p - position_at(other, time);
       batch.push(wraps_here ? minimum_image(offset) : offset, v - o.velocity, b.radius + o.radius,
                  other);
@@ -407,9 +407,11 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   bool resolved = false;
   if (approach > 0.0) {
     const double restitution = pair_restitution(i, j, t);
-    const double impulse = (1.0 + restitution) * approach / (a.inverse_mass + b.inverse_mass);
-    a.velocity -= normal * (impulse * a.inverse_mass);
-    b.velocity += normal * (impulse * b.inverse_mass);
+    const double inverse_a = a.inverse_mass();
+    const double inverse_b = b.inverse_mass();
+    const double impulse = (1.0 + restitution) * approach / (inverse_a + inverse_b);
+    a.velocity -= normal * (impulse * inverse_a);
+    b.velocity += normal * (impulse * inverse_b);
     if (def.collapse_time > 0.0) {
       last_contact_times[i] = t;
       last_contact_times[j] = t;
@@ -468,7 +470,7 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
     contact.point = point;
     contact.normal = normal;
     contact.approach_speed = approach;
-    contact.impulse = a.inverse_mass > 0.0 ? speed_change * infos[i].mass : 0.0;
+    contact.impulse = a.movable() ? speed_change * a.mass : 0.0;
     record(contact);
     resolved = true;
     ++a.version;

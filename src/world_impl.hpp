@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "carom/bounce.hpp"  // kImmovable
 #include "carom/world.hpp"
 #include "event_queue.hpp"
 #include "grid.hpp"
@@ -34,7 +35,11 @@ struct alignas(64) BallSlot {
   Vec2 velocity;
   double local_time = 0.0;
   double radius = 0.0;
-  double inverse_mass = 0.0;  // 0 for an immovable ball
+  double mass = 0.0;  // kImmovable (+infinity) for an immovable ball
+  // 1/mass, 0 for an immovable ball: computed where needed (the same double as storing it,
+  // which would cost 8 bytes a ball).
+  [[nodiscard]] double inverse_mass() const { return 1.0 / mass; }
+  [[nodiscard]] bool movable() const { return mass != kImmovable; }
   std::uint32_t version = 0;  // bumped whenever the trajectory changes
   bool alive = false;
 };
@@ -42,7 +47,6 @@ struct alignas(64) BallSlot {
 // The rest of a ball, read only by contacts and the API (kept apart so that prediction's
 // scans of neighbours touch one cache line per ball).
 struct BallInfo {
-  double mass = 0.0;
   double restitution = 1.0;
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0

@@ -29,7 +29,7 @@ bool World::Impl::no_contact_ever() const {
   // Two balls of which at least one can respond are the only pairs that ever meet; both
   // immovable pass through each other.
   const auto can_meet = [&](std::uint32_t i, std::uint32_t j) {
-    return balls[i].inverse_mass != 0.0 || balls[j].inverse_mass != 0.0;
+    return balls[i].movable() || balls[j].movable();
   };
 
   if (def.boundary == Boundary::periodic) {

@@ -149,9 +149,9 @@ std::string World::Impl::save_payload() const {
     out.vec2(b.velocity);
     out.f64(b.local_time);
     out.f64(b.radius);
-    out.f64(b.inverse_mass);
+    out.f64(b.inverse_mass());
     out.u32(b.version);
-    out.f64(info.mass);
+    out.f64(b.mass);
     out.f64(info.restitution);
     out.u64(info.user_data);
     out.u32(info.generation);
@@ -307,9 +307,9 @@ void World::Impl::load_payload(ByteReader& in) {
     b.velocity = in.vec2("ball velocity");
     b.local_time = in.f64("ball local time");
     b.radius = in.f64("ball radius");
-    b.inverse_mass = in.f64("ball inverse mass");
+    const double inverse_mass = in.f64("ball inverse mass");
     b.version = in.u32("ball version");
-    info.mass = in.f64("ball mass");
+    b.mass = in.f64("ball mass");
     info.restitution = in.f64("ball restitution");
     if (info.restitution != def.restitution) mixed_restitution = true;
     info.user_data = in.u64("ball user data");
@@ -320,12 +320,11 @@ void World::Impl::load_payload(ByteReader& in) {
     if (!b.alive) continue;
     ++live_count;
     largest_alive = std::max(largest_alive, b.radius);
-    const bool immovable = info.mass == kImmovable;
+    const bool immovable = b.mass == kImmovable;
     if (!finite(b.position) || !finite(b.velocity) || !(b.local_time <= time) ||
         !std::isfinite(b.local_time) || !(b.radius > 0.0 && std::isfinite(b.radius)) ||
-        !(immovable ? b.inverse_mass == 0.0
-                    : info.mass > 0.0 && std::isfinite(info.mass) && b.inverse_mass > 0.0 &&
-                          std::isfinite(b.inverse_mass)) ||
+        !(immovable ? inverse_mass == 0.0
+                    : b.mass > 0.0 && std::isfinite(b.mass) && inverse_mass == 1.0 / b.mass) ||
         !(info.restitution >= 0.0 && info.restitution <= 1.0) ||
         (tc && std::isnan(last_contact_times[i]))) {
       in.inconsistent(which, "position " + vector_text(b.position),

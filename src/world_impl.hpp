@@ -35,13 +35,14 @@ struct alignas(64) BallSlot {
   Vec2 velocity;
   double local_time = 0.0;
   double radius = 0.0;
-  double mass = 0.0;  // kImmovable (+infinity) for an immovable ball
-  // 1/mass, 0 for an immovable ball: computed where needed (the same double as storing it,
-  // which would cost 8 bytes a ball).
-  [[nodiscard]] double inverse_mass() const { return 1.0 / mass; }
-  [[nodiscard]] bool movable() const { return mass != kImmovable; }
+  double mass = 0.0;          // kImmovable (+infinity) for an immovable ball
   std::uint32_t version = 0;  // bumped whenever the trajectory changes
   bool alive = false;
+
+  // 1/mass (+0 for an immovable ball), computed where needed: the same double as storing it,
+  // which would cost 8 bytes a ball.
+  [[nodiscard]] double inverse_mass() const { return 1.0 / mass; }
+  [[nodiscard]] bool movable() const { return mass != kImmovable; }
 };
 
 // The rest of a ball, read only by contacts and the API (kept apart so that prediction's

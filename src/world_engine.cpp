@@ -46,6 +46,11 @@ constexpr std::uint64_t kSortMinEvents = 1 << 16;
 // A grid with at least this many cells per axis has interior cells whose 3×3 block needs no
 // minimum image (predict).
 constexpr std::int32_t kInteriorMinCells = 5;
+// A periodic grid with at least this many cells per axis needs only the nearest image of each
+// pair: between two predictions of a pair neither ball leaves its cell, so their offset moves
+// by under two cells per axis, and a pair that touches (within one cell) was within three cells
+// when predicted, under half a period from 7 cells on (6 leaves no room for the cell margin).
+constexpr std::int32_t kSingleImageMinCells = 7;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
@@ -84,7 +89,9 @@ double World::Impl::wanted_cell_size(double extent_x, double extent_y, std::size
     // every diameter below this).
     cell = std::min(cell, std::min(extent_x, extent_y) / 3.0);
   }
-  return cell;
+  // An open world with no ball and walls that are all one point has nothing to size cells by;
+  // any positive size serves (the grid is re-planned when a ball comes).
+  return cell > 0.0 ? cell : 1.0;
 }
 
 void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
@@ -293,7 +300,10 @@ void World::Impl::predict(std::uint32_t ball) {
     }
     batch.count = 0;
   };
-  const auto gather = [&](std::int32_t neighbour, auto wraps_here) CAROM_ALWAYS_INLINE {
+  // How a neighbour's offset is taken: as it is, as the minimum image, or as the minimum image
+  // and its eight neighbouring images (periodic grids with few cells, below).
+  enum Images { kDirect, kNearest, kAround };
+  const auto gather = [&](std::int32_t neighbour, auto images) CAROM_ALWAYS_INLINE {
     for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
@@ -301,22 +311,45 @@ void World::Impl::predict(std::uint32_t ball) {
       const BallSlot& o = balls[other];
       if (!movable && !o.movable()) continue;  // nothing can respond
       const Vec2 offset = p - position_at(other, time);
-      batch.push(wraps_here ? minimum_image(offset) : offset, v - o.velocity, b.radius + o.radius,
-                 other);
+      const Vec2 u = v - o.velocity;
+      const double reach = b.radius + o.radius;
+      if constexpr (images == kDirect) {
+        batch.push(offset, u, reach, other);
+      } else if constexpr (images == kNearest) {
+        batch.push(minimum_image(offset), u, reach, other);
+      } else {
+        const Vec2 nearest = minimum_image(offset);
+        for (int kx = -1; kx <= 1; ++kx) {
+          for (int ky = -1; ky <= 1; ++ky) {
+            if (batch.count + 1 > detail::PairBatch::kCapacity) solve_batch();
+            batch.push(nearest + Vec2{kx * period.x, ky * period.y}, u, reach, other);
+          }
+        }
+      }
       if (batch.full()) solve_batch();
     }
   };
+  using Direct = std::integral_constant<Images, kDirect>;
+  using Nearest = std::integral_constant<Images, kNearest>;
+  using Around = std::integral_constant<Images, kAround>;
+  const bool periodic = def.boundary == Boundary::periodic;
+  // A periodic grid with fewer cells per axis than this lets a pair meet through an image other
+  // than the one nearest when it was predicted (docs/world.md, "Boundaries"): all nine are tried.
+  const bool few_cells =
+      periodic && (grid.nx() < kSingleImageMinCells || grid.ny() < kSingleImageMinCells);
   const bool interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
                         grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
-  if (interior) {
+  if (few_cells) {
+    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Around{}); });
+  } else if (interior) {
     for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
       const std::int32_t first = grid.index(cx - 1, row);
-      for (std::int32_t k = 0; k < 3; ++k) gather(first + k, std::false_type{});
+      for (std::int32_t k = 0; k < 3; ++k) gather(first + k, Direct{});
     }
-  } else if (def.boundary == Boundary::periodic) {
-    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, std::true_type{}); });
+  } else if (periodic) {
+    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Nearest{}); });
   } else {
-    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, std::false_type{}); });
+    grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Direct{}); });
   }
   solve_batch();
   queue.set(ball, best);

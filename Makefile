@@ -113,6 +113,28 @@ fuzz-toi: fuzz-toi-build
 	$(TOI_FUZZ) -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -artifact_prefix=build/fuzz/ \
 	  build/fuzz/corpus/toi tests/fuzz/corpus/toi
 
+# The World driven by random API calls (tests/fuzz/world_fuzz.cpp), from the committed seeds in
+# tests/fuzz/corpus/world. Each smoke run's length is a variable, so CI time can be tuned.
+WORLD_FUZZ := build/fuzz/tests/fuzz/carom_world_fuzz
+WORLD_FUZZ_SMOKE_SECONDS ?= 15
+WORLD_FUZZ_FLAGS := -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=build/fuzz/
+.PHONY: fuzz-world-build fuzz-world-smoke fuzz-world
+fuzz-smoke: fuzz-world-smoke
+fuzz: fuzz-world
+
+fuzz-world-build:
+	cmake --preset fuzz >/dev/null
+	cmake --build --preset fuzz --target carom_world_fuzz
+	mkdir -p build/fuzz/corpus/world
+
+fuzz-world-smoke: fuzz-world-build
+	$(WORLD_FUZZ) -max_total_time=$(WORLD_FUZZ_SMOKE_SECONDS) $(WORLD_FUZZ_FLAGS) \
+	  build/fuzz/corpus/world tests/fuzz/corpus/world
+
+fuzz-world: fuzz-world-build
+	$(WORLD_FUZZ) -max_total_time=$(FUZZ_SECONDS) $(WORLD_FUZZ_FLAGS) \
+	  build/fuzz/corpus/world tests/fuzz/corpus/world
+
 # The long versions of the tests that make test runs short (CAROM_LONG_TESTS=1 un-skips them).
 test-long: deps
 	cmake --preset release >/dev/null

@@ -92,7 +92,8 @@ struct ContactEvent {
 enum class Placement : std::uint8_t {
   refuse,        // throw carom::InvalidArgument, leaving the ball where it was
   nearest_free,  // move it along the line from its old place towards the new one, as far as it
-                 // can go without overlap (the dragged ball stops where it first touches)
+                 // can go without overlap (the dragged ball stops where it first touches); in a
+                 // periodic world the shortest way to the new place's image in the cell
 };
 
 class World {

@@ -22,7 +22,7 @@ RUN_ANIMATION := $(RUN_DIR)/billiards-break.gif
 CAROM := build/release/apps/carom/carom
 # The scene loader's libFuzzer target: a bounded run in make test, a longer one in make fuzz.
 FUZZER := build/fuzz/tests/fuzz/carom_scene_fuzz
-FUZZ_SMOKE_SECONDS := 20
+FUZZ_SMOKE_SECONDS ?= 20
 
 .PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
 .PHONY: wasm playground test-web bench-web
@@ -95,6 +95,7 @@ test-tsan:
 # in tests/fuzz/corpus/toi and keeps what it finds in build/fuzz/corpus/toi, so the committed
 # corpus changes only by hand. make fuzz runs each target for FUZZ_SECONDS.
 FUZZ_SECONDS ?= 600
+TOI_FUZZ_SMOKE_SECONDS ?= 20
 TOI_FUZZ := build/fuzz/tests/fuzz/carom_toi_fuzz
 .PHONY: fuzz-smoke fuzz fuzz-toi-build fuzz-toi-smoke fuzz-toi
 fuzz-smoke: fuzz-toi-smoke
@@ -106,7 +107,7 @@ fuzz-toi-build:
 	mkdir -p build/fuzz/corpus/toi
 
 fuzz-toi-smoke: fuzz-toi-build
-	$(TOI_FUZZ) -max_total_time=20 -print_final_stats=1 -artifact_prefix=build/fuzz/ \
+	$(TOI_FUZZ) -max_total_time=$(TOI_FUZZ_SMOKE_SECONDS) -print_final_stats=1 -artifact_prefix=build/fuzz/ \
 	  build/fuzz/corpus/toi tests/fuzz/corpus/toi
 
 fuzz-toi: fuzz-toi-build
@@ -227,3 +228,12 @@ bench-peers: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_peers
 	build/release/bench/peers/carom_peers report --out docs/peers.md --command "make bench-peers"
+
+# The soak test (issue 8; not in make test): 10⁸ collisions of the hard-disk gas at packing 0.6,
+# audited every 10⁶, with energy, momentum and memory checked (bench/world_soak.cpp). Minutes.
+SOAK_ARGS ?= 10000 0.6 1e8 1e6
+.PHONY: soak
+soak: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_world_soak
+	build/release/bench/carom_world_soak $(SOAK_ARGS)

@@ -75,6 +75,9 @@ Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
 Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
                                   double tolerance) const {
   const Impl& w = *this;
+  // Two immovable balls pass through each other (nothing could respond; docs/world.md): their
+  // overlap breaks no promise.
+  if (w.balls[i].inverse_mass == 0.0 && w.balls[j].inverse_mass == 0.0) return std::nullopt;
   const double reach = w.balls[i].radius + w.balls[j].radius;
   const Vec2 q = w.position_at(j, w.time);
   const double gap = length(w.minimum_image(q - p));

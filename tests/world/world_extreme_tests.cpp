@@ -334,5 +334,16 @@ TEST(WorldFuzzFound, PeriodicDragStopsAtTheImageOfABall) {
   EXPECT_NEAR(length(gap), 0.2, 1e-12);
 }
 
+// Two immovable balls pass through each other (docs/world.md: nothing could respond); the audit
+// reported their overlap as a violation.
+TEST(WorldFuzzFound, ImmovableBallsPassingThroughEachOtherPassTheAudit) {
+  World world;
+  world.add_ball(ball_at({-2.0, 0.0}, {1.0, 0.0}, 0.5, kImmovable));
+  world.add_ball(ball_at({2.0, 0.0}, {-1.0, 0.0}, 0.5, kImmovable));
+  world.step(2.0);  // centres coincide at t = 2
+  EXPECT_TRUE(world.contacts().empty());
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
 }  // namespace
 }  // namespace carom

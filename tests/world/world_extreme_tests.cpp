@@ -216,6 +216,21 @@ TEST(WorldExtreme, DISABLED_JammedRowOfTouchingBallsAdvances) {
   EXPECT_GT(world.time(), 0.0) << "100 000 contacts at time 0";
 }
 
+// A ball touching the inside of a full circle and moving along it (normal speed 0) leaves the
+// circle at once: the contact rule "touching and not approaching is no contact" (right for flat
+// and convex walls, along which such a ball slides clear) is wrong for a concave wall, where the
+// gap closes at second order. Reporting a contact at time 0 instead would bounce at normal speed
+// 0, change nothing and repeat for ever: it needs a decision in the engine (reported to the lead;
+// src/sweep.cpp and src/world_engine.cpp). The world fuzzer found it (nearest_free into a bowl,
+// then an axis-aligned velocity) and stops an input that makes such a ball.
+TEST(WorldExtreme, DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside) {
+  World world;
+  world.add_arc({{20.0, 20.0}, 8.5, std::numbers::pi, 3.0 * std::numbers::pi});
+  world.add_ball(ball_at({20.0, 12.0}, {7.0, 0.0}));  // touching the circle exactly, at its bottom
+  world.step(0.0121);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
 // ---- points as walls -------------------------------------------------------------------------
 
 // A ball of radius 0.5 at (-3, 0.3) moving at (1, 0) meets a point at the origin when it is 0.4

@@ -129,7 +129,18 @@ void contact_with_segment_side(const Ball& ball, Vec2 velocity, const Segment& s
     distance = -distance;
   }
   const double normal_speed = dot(velocity, outward);
-  if (!(distance > ball.radius && normal_speed < 0.0)) return;
+  if (!(normal_speed < 0.0)) return;
+  if (!(distance > ball.radius)) {
+    // Touching the interior by this measure and approaching: a contact now. contact_at_start
+    // measures the gap from the nearest point, which rounds differently and can see the ball a
+    // rounding clear of the line when this sees it touching; without this both would pass it
+    // over and the ball would cross the wall (found by the world fuzzer).
+    const double foot = dot(ball.center - segment.a, along) / length_sq;
+    if (foot >= 0.0 && foot <= 1.0) {
+      keep_earliest(best, 0.0, ball.center - outward * distance, -outward);
+    }
+    return;
+  }
   const double t = (distance - ball.radius) / -normal_speed;
   if (!(t <= horizon)) return;
   const Vec2 point = ball.center + velocity * t - outward * ball.radius;

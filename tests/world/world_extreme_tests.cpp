@@ -4,6 +4,7 @@
 // (tests/fuzz/world_fuzz.cpp) found, named after what it found. Each works exactly, to the
 // rounding stated beside it; docs/guarantees.md lists them.
 #include <gtest/gtest.h>
+#include <unistd.h>  // alarm: a watchdog for a run that might never return
 
 #include <cmath>
 #include <cstdint>
@@ -358,6 +359,20 @@ TEST(WorldFuzzFound, ImmovableBallsPassingThroughEachOtherPassTheAudit) {
   world.step(2.0);  // centres coincide at t = 2
   EXPECT_TRUE(world.contacts().empty());
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// Two balls in an open world approaching each other at 1.2e-16 along a line that passes them 14
+// units apart: they never meet, but the pair is not "moving apart", and run_collisions without a
+// time limit followed cell crossings for ever (closest approach at t = 3e17). The proof now
+// accepts a pair whose relative line clears the two radii. The alarm ends a hang as a failure.
+TEST(WorldFuzzFound, ApproachingPairThatMissesEndsRunCollisions) {
+  World world;
+  world.add_ball(ball_at({27.058823529411761, -5.9885557335774777}, {0.5, 0.0}));
+  world.add_ball(
+      ball_at({13.101396200503551, 29.582970931563281}, {0.5, -1.2246467991473532e-16}, 0.1));
+  alarm(60);
+  EXPECT_EQ(world.run_collisions(6), 0u);
+  alarm(0);
 }
 
 }  // namespace

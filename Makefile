@@ -22,7 +22,7 @@ RUN_ANIMATION := $(RUN_DIR)/billiards-break.gif
 CAROM := build/release/apps/carom/carom
 # The scene loader's libFuzzer target: a bounded run in make test, a longer one in make fuzz.
 FUZZER := build/fuzz/tests/fuzz/carom_scene_fuzz
-FUZZ_SMOKE_SECONDS := 20
+FUZZ_SMOKE_SECONDS ?= 20
 
 .PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
 .PHONY: wasm playground test-web bench-web
@@ -95,6 +95,7 @@ test-tsan:
 # in tests/fuzz/corpus/toi and keeps what it finds in build/fuzz/corpus/toi, so the committed
 # corpus changes only by hand. make fuzz runs each target for FUZZ_SECONDS.
 FUZZ_SECONDS ?= 600
+TOI_FUZZ_SMOKE_SECONDS ?= 20
 TOI_FUZZ := build/fuzz/tests/fuzz/carom_toi_fuzz
 .PHONY: fuzz-smoke fuzz fuzz-toi-build fuzz-toi-smoke fuzz-toi
 fuzz-smoke: fuzz-toi-smoke
@@ -106,12 +107,34 @@ fuzz-toi-build:
 	mkdir -p build/fuzz/corpus/toi
 
 fuzz-toi-smoke: fuzz-toi-build
-	$(TOI_FUZZ) -max_total_time=20 -print_final_stats=1 -artifact_prefix=build/fuzz/ \
+	$(TOI_FUZZ) -max_total_time=$(TOI_FUZZ_SMOKE_SECONDS) -print_final_stats=1 -artifact_prefix=build/fuzz/ \
 	  build/fuzz/corpus/toi tests/fuzz/corpus/toi
 
 fuzz-toi: fuzz-toi-build
 	$(TOI_FUZZ) -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -artifact_prefix=build/fuzz/ \
 	  build/fuzz/corpus/toi tests/fuzz/corpus/toi
+
+# The World driven by random API calls (tests/fuzz/world_fuzz.cpp), from the committed seeds in
+# tests/fuzz/corpus/world. Each smoke run's length is a variable, so CI time can be tuned.
+WORLD_FUZZ := build/fuzz/tests/fuzz/carom_world_fuzz
+WORLD_FUZZ_SMOKE_SECONDS ?= 15
+WORLD_FUZZ_FLAGS := -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=build/fuzz/
+.PHONY: fuzz-world-build fuzz-world-smoke fuzz-world
+fuzz-smoke: fuzz-world-smoke
+fuzz: fuzz-world
+
+fuzz-world-build:
+	cmake --preset fuzz >/dev/null
+	cmake --build --preset fuzz --target carom_world_fuzz
+	mkdir -p build/fuzz/corpus/world
+
+fuzz-world-smoke: fuzz-world-build
+	$(WORLD_FUZZ) -max_total_time=$(WORLD_FUZZ_SMOKE_SECONDS) $(WORLD_FUZZ_FLAGS) \
+	  build/fuzz/corpus/world tests/fuzz/corpus/world
+
+fuzz-world: fuzz-world-build
+	$(WORLD_FUZZ) -max_total_time=$(FUZZ_SECONDS) $(WORLD_FUZZ_FLAGS) \
+	  build/fuzz/corpus/world tests/fuzz/corpus/world
 
 # The long versions of the tests that make test runs short (CAROM_LONG_TESTS=1 un-skips them).
 test-long: deps
@@ -205,3 +228,12 @@ bench-peers: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_peers
 	build/release/bench/peers/carom_peers report --out docs/peers.md --command "make bench-peers"
+
+# The soak test (issue 8; not in make test): 10⁸ collisions of the hard-disk gas at packing 0.6,
+# audited every 10⁶, with energy, momentum and memory checked (bench/world_soak.cpp). Minutes.
+SOAK_ARGS ?= 10000 0.6 1e8 1e6
+.PHONY: soak
+soak: deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_world_soak
+	build/release/bench/carom_world_soak $(SOAK_ARGS)

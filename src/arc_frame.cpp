@@ -46,6 +46,14 @@ ArcFrame make_arc_frame(const char* function, const Arc& arc) {
   require_positive(function, "arc.radius", arc.radius);
   require_finite(function, "arc.start_angle", arc.start_angle);
   require_finite(function, "arc.end_angle", arc.end_angle);
+  // The full-circle allowance below grows with the angles (4 ulps of the larger); at 2^40 rad it
+  // is 2^-10 rad, beyond it would let a span far over 2π pass as a full circle (at 1e45 rad, a
+  // span of 1e29). No arc needs more than ±2^40 rad (1.7e11 turns) to say where it starts.
+  constexpr const char* kAngleBound = "must lie in [-2^40, 2^40] radians (1.0995e12)";
+  require_that(std::abs(arc.start_angle) <= kLargestArcAngle, function, "arc.start_angle",
+               arc.start_angle, kAngleBound);
+  require_that(std::abs(arc.end_angle) <= kLargestArcAngle, function, "arc.end_angle",
+               arc.end_angle, kAngleBound);
   // Every point of the circle must be a finite position, or its touched points could not be
   // reported.
   const double reach = std::max(std::abs(arc.center.x), std::abs(arc.center.y)) + arc.radius;

@@ -129,7 +129,18 @@ void contact_with_segment_side(const Ball& ball, Vec2 velocity, const Segment& s
     distance = -distance;
   }
   const double normal_speed = dot(velocity, outward);
-  if (!(distance > ball.radius && normal_speed < 0.0)) return;
+  if (!(normal_speed < 0.0)) return;
+  if (!(distance > ball.radius)) {
+    // Touching the interior by this measure and approaching: a contact now. contact_at_start
+    // measures the gap from the nearest point, which rounds differently and can see the ball a
+    // rounding clear of the line when this sees it touching; without this both would pass it
+    // over and the ball would cross the wall (found by the world fuzzer).
+    const double foot = dot(ball.center - segment.a, along) / length_sq;
+    if (foot >= 0.0 && foot <= 1.0) {
+      keep_earliest(best, 0.0, ball.center - outward * distance, -outward);
+    }
+    return;
+  }
   const double t = (distance - ball.radius) / -normal_speed;
   if (!(t <= horizon)) return;
   const Vec2 point = ball.center + velocity * t - outward * ball.radius;
@@ -261,7 +272,17 @@ void contact_with_arc_interior(const Ball& ball, Vec2 velocity, const ArcFrame& 
   }
   ScaledMotion inner = offset_motion(ball.center, arc.center, velocity, arc.radius, -ball.radius);
   if (inner.radius > 0.0) {
-    consider(inner, exit_crossing(inner, horizon), 1.0, 1.0);
+    detail::Crossing leaving = exit_crossing(inner, horizon);
+    // On or a rounding past the circle along which the ball touches the arc's inside (where
+    // set_position's nearest_free stops it, say), its centre still inside the arc's circle, and
+    // moving outwards: it touches now. exit_crossing's root is then at t <= 0, which it does not
+    // report, and the ball would leave through the arc.
+    if (!leaving.found && !detail::strictly_within_distance(inner.s, inner.radius) &&
+        detail::strictly_within_distance(inner.s, std::ldexp(arc.radius, -inner.length_exponent)) &&
+        detail::dot_positive(inner.s, inner.u)) {
+      leaving = {true, 0.0};
+    }
+    consider(inner, leaving, 1.0, 1.0);
   } else if (inner.radius < 0.0) {
     inner.radius = -inner.radius;
     consider(inner, entry_crossing(inner, horizon), -1.0, -1.0);

@@ -387,14 +387,25 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   Vec2 target = position;
   if (placement == Placement::nearest_free) {
     // Sweep the ball from where it is to where it is asked to go; it stops at the first touch.
-    const Vec2 move = position - from;
+    // In a periodic cell it goes the shortest way (at most half a period on each axis), and
+    // meets each other ball at any of its 3×3 images around the nearest: with diameters below a
+    // third of the period, those are all the images within reach of such a path.
+    const bool periodic = w.def.boundary == Boundary::periodic;
+    const Vec2 move =
+        periodic ? w.minimum_image(w.wrap_into_cell(position) - from) : position - from;
+    const int images = periodic ? 1 : 0;
     double fraction = 1.0;
     const Ball moving{from, b.radius};
     for (std::uint32_t j = 0; j < w.balls.size(); ++j) {
       if (j == slot || !w.balls[j].alive) continue;
-      const Vec2 other = from + w.minimum_image(w.position_at(j, w.time) - from);
-      const Impact hit = sweep_ball_ball(moving, move, {other, w.balls[j].radius});
-      if (hit.hit) fraction = std::min(fraction, hit.t);
+      const Vec2 nearest = from + w.minimum_image(w.position_at(j, w.time) - from);
+      for (int kx = -images; kx <= images; ++kx) {
+        for (int ky = -images; ky <= images; ++ky) {
+          const Vec2 other = nearest + Vec2{kx * w.period.x, ky * w.period.y};
+          const Impact hit = sweep_ball_ball(moving, move, {other, w.balls[j].radius});
+          if (hit.hit) fraction = std::min(fraction, hit.t);
+        }
+      }
     }
     for (const detail::Wall& wall : w.walls) {
       const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);

@@ -23,6 +23,14 @@ bool moving_apart(Vec2 s, Vec2 u) {
   return dot(s, u) > kApartSlack * length(s) * length(u);
 }
 
+// True when two balls at offset s with relative velocity u never come within `reach`: moving
+// apart, or approaching along a line that passes them by more than reach (the closest distance
+// of |s + u·t| over all t is |s × u| / |u|), with the same relative room for rounding.
+bool never_within(Vec2 s, Vec2 u, double reach) {
+  if (moving_apart(s, u)) return true;
+  return std::abs(cross(s, u)) > reach * (1.0 + kApartSlack) * length(u);
+}
+
 }  // namespace
 
 bool World::Impl::no_contact_ever() const {
@@ -59,9 +67,11 @@ bool World::Impl::no_contact_ever() const {
 
   // Open world or box: straight lines in the plane. The distance from a point moving in a
   // straight line to a convex set is a convex function of time, so once it grows it grows for
-  // ever. Ball pairs: |s + u·t| grows once s·u > 0. Segments (convex): the ball moves away from
-  // its nearest point. Arcs: the arc lies in its circle's disk (convex); a ball outside that
-  // disk by more than its radius and moving away from the centre never reaches the arc.
+  // ever. Ball pairs: |s + u·t| grows once s·u > 0, and never falls below |s × u|/|u|, so a pair
+  // whose relative line passes clear of the two radii never meets either. Segments (convex): the
+  // ball moves away from its nearest point. Arcs: the arc lies in its circle's disk (convex); a
+  // ball outside that disk by more than its radius and moving away from the centre never reaches
+  // the arc.
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     const detail::BallSlot& a = balls[i];
     if (!a.alive) continue;
@@ -80,7 +90,10 @@ bool World::Impl::no_contact_ever() const {
     }
     for (std::uint32_t j = i + 1; j < balls.size(); ++j) {
       if (!balls[j].alive || !can_meet(i, j)) continue;
-      if (!moving_apart(p - position_at(j, time), a.velocity - balls[j].velocity)) return false;
+      const double reach = a.radius + balls[j].radius;
+      if (!never_within(p - position_at(j, time), a.velocity - balls[j].velocity, reach)) {
+        return false;
+      }
     }
   }
   return true;

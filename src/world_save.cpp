@@ -390,10 +390,15 @@ void World::Impl::load_grid(ByteReader& in) {
   // A grid never has more cells than wanted_cell_size allows (4 a ball, at least 1024), give or
   // take the rounding of the cell count; this bound keeps a damaged file from allocating more.
   const double most_cells = 2.0 * std::max(1024.0, 4.0 * (static_cast<double>(slots) + 1.0)) + 9;
-  if (!finite(lower) || !finite(cell) || !(cell.x > 0.0 && cell.y > 0.0) || nx < 1 || ny < 1 ||
+  // The grid of an open world with no ball (nor a wall of any extent) has cells of size 0: the
+  // engine plans cells from the largest radius and the extent, both 0. It is harmless there (the
+  // next add_ball finds the cell too small and re-plans) and must load like any state save wrote.
+  const bool cells_fit =
+      (cell.x > 0.0 && cell.y > 0.0) || (live_count == 0 && cell.x >= 0.0 && cell.y >= 0.0);
+  if (!finite(lower) || !finite(cell) || !cells_fit || nx < 1 || ny < 1 ||
       static_cast<double>(nx) * static_cast<double>(ny) > most_cells) {
     in.inconsistent("grid", std::to_string(nx) + "x" + std::to_string(ny),
-                    "a grid has finite positive cells and at most " +
+                    "a grid has finite positive cells (or none if no ball) and at most " +
                         detail::number_text(most_cells) + " of them");
   }
   grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, slots);

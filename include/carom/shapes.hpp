@@ -6,6 +6,10 @@
 
 namespace carom {
 
+// The largest |angle| an Arc may have: 2^40 rad (1.1e12), where a full circle's rounding
+// allowance is 2^-10 rad.
+inline constexpr double kLargestArcAngle = 0x1p40;
+
 // A disc: centre and radius (> 0).
 struct Ball {
   Vec2 center;
@@ -24,6 +28,9 @@ struct Segment {
 // must lie in [0, 2π]: a span of 0 is a single point, 2π the full circle. Balls touch it from
 // outside, from inside and at its two end points. The whole circle must lie within the double
 // range (max(|center.x|, |center.y|) + radius finite), so that every touched point is finite.
+// Both angles must lie within ±kLargestArcAngle: a span just over 2π is taken for a full circle
+// when the excess is a rounding of the angles (4 ulps of the larger), and beyond that bound the
+// rounding of an angle is no longer small against a turn.
 struct Arc {
   Vec2 center;
   double radius = 1.0;

@@ -92,7 +92,8 @@ struct ContactEvent {
 enum class Placement : std::uint8_t {
   refuse,        // throw carom::InvalidArgument, leaving the ball where it was
   nearest_free,  // move it along the line from its old place towards the new one, as far as it
-                 // can go without overlap (the dragged ball stops where it first touches)
+                 // can go without overlap (the dragged ball stops where it first touches); in a
+                 // periodic world the shortest way to the new place's image in the cell
 };
 
 class World {
@@ -211,10 +212,11 @@ class World {
 
   // ---- checking ----
   // Check of the invariants (no two balls or a ball and a wall overlapping by more than
-  // `tolerance` times the sum of radii, every ball inside a box); returns a description of the
-  // first violation, or nothing. Up to 256 balls it checks every pair (O(N²)); above, it checks
-  // each ball's 3×3 block of grid cells (O(N)) after checking that the ball lies in the cell the
-  // engine filed it in, the invariant that makes the 3×3 block hold every ball it can touch.
+  // `tolerance` times the sum of radii plus the rounding of their positions, every ball inside a
+  // box; two immovable balls may overlap, as they pass through each other); returns a description
+  // of the first violation, or nothing. Up to 256 balls it checks every pair (O(N²)); above, it
+  // checks each ball's 3×3 block of grid cells (O(N)) after checking that the ball lies in the cell
+  // the engine filed it in, the invariant that makes the 3×3 block hold every ball it can touch.
   [[nodiscard]] std::optional<std::string> audit(double tolerance = 1e-9) const;
   // The same, every pair whatever the size: relies on nothing the engine maintains.
   [[nodiscard]] std::optional<std::string> audit_all_pairs(double tolerance = 1e-9) const;

@@ -1,5 +1,6 @@
 // Reading a scene: JSON text to a checked carom::Scene. Field by field here; the geometry
 // (overlaps, balls outside a box, generators that cannot place their balls) in scene_check.cpp.
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -147,6 +148,13 @@ Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPat
   arc.radius = positive(f, "radius", 1.0);
   arc.start_angle = f.number("start_angle");
   arc.end_angle = f.number("end_angle");
+  const auto check_angle = [&f](const char* field, double angle) {
+    if (!(std::abs(angle) <= kLargestArcAngle)) {
+      f.fail(field, "must lie in [-2^40, 2^40] radians (1.0995e12; include/carom/shapes.hpp)");
+    }
+  };
+  check_angle("start_angle", arc.start_angle);
+  check_angle("end_angle", arc.end_angle);
   const double span = arc.end_angle - arc.start_angle;
   constexpr double kTwoPi = 6.283185307179586;
   // The world accepts spans up to 2π plus a rounding (include/carom/shapes.hpp).

@@ -127,6 +127,29 @@ TEST(InvalidArgument, StaticShapeArguments) {
       "sweep_ball_arc", "arc.start_angle", "nan");
 }
 
+// At 1e45 rad the full-circle allowance (4 ulps of the larger angle) would take a span of ~1e29
+// for a full circle: angles beyond ±2^40 are refused, the bound itself is accepted.
+TEST(InvalidArgument, ArcAnglesBeyondTwoToTheFortyAreRefused) {
+  expect_invalid(
+      [] {
+        (void)sweep_ball_arc(kBall, {}, {{0.0, 0.0}, 5.0, 1e45, 1e45 + 1.5e29});
+      },
+      "sweep_ball_arc", "arc.start_angle", "1e+45");
+  expect_invalid(
+      [] {
+        (void)sweep_ball_arc(kBall, {}, {{0.0, 0.0}, 5.0, 0.0, -0x1p41});
+      },
+      "sweep_ball_arc", "arc.end_angle", "-2199023255552");
+  const double bound = kLargestArcAngle;
+  EXPECT_NO_THROW((void)sweep_ball_arc(kBall, {}, {{0.0, 0.0}, 5.0, bound, bound}));
+  EXPECT_NO_THROW((void)sweep_ball_arc(kBall, {}, {{0.0, 0.0}, 5.0, -bound, -bound + 6.0}));
+  try {
+    (void)sweep_ball_arc(kBall, {}, {{0.0, 0.0}, 5.0, 0x1p40 * 1.5, 0x1p40 * 1.5});
+  } catch (const InvalidArgument& error) {
+    EXPECT_EQ(error.requirement(), "must lie in [-2^40, 2^40] radians (1.0995e12)");
+  }
+}
+
 TEST(InvalidArgument, TinyButPositiveRadiusIsAccepted) {
   EXPECT_NO_THROW((void)sweep_ball_ball({{0.0, 0.0}, 1e-300}, {1.0, 0.0}, kBall));
   EXPECT_NO_THROW((void)sweep_ball_ball({{0.0, 0.0}, 4.9e-324}, {1.0, 0.0}, kBall));

@@ -143,5 +143,23 @@ TEST(TimeOfImpactBallSegment, Horizon) {
   EXPECT_FALSE(time_of_impact_ball_segment(ball, {0.0, -2.0}, kFloor, 1.5).hit);
 }
 
+// Found by the world fuzzer: a ball dragged until it touched a slanted wall, then dragged through
+// it. By the side test (distance from the line) it touched the wall; by the nearest-point test
+// (contact_at_start) it was 2e-16 clear. Each left the contact to the other, and the ball crossed
+// the interior to meet the far end point 0.002 later, overlapping the wall by 0.006.
+TEST(SweepBallSegment, TouchingTheInteriorWhereTheTwoMeasuresDisagreeHitsAtZero) {
+  const Segment wall{{0.00030518043793392844, 0.043030441748683909},
+                     {3.7650110627908751, 7.8416113527122908}};
+  const Ball ball{{3.661002536209665, 7.8561818951218099}, 0.1};
+  const Vec2 move = Vec2{5.882352941176471, 5.882352941176471} - ball.center;
+  const Impact impact = time_of_impact_ball_segment(ball, move, wall, 1.0);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_EQ(impact.t, 0.0);
+  // The interior's normal, not the end point's.
+  const Vec2 along = normalized(wall.b - wall.a);
+  EXPECT_NEAR(impact.normal.x, along.y, 1e-12);
+  EXPECT_NEAR(impact.normal.y, -along.x, 1e-12);
+}
+
 }  // namespace
 }  // namespace carom

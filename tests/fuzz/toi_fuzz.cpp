@@ -154,21 +154,23 @@ void fuzz_static_shapes(const Input& in) {
     check_answer(at_segment, in.horizon);
   }
 
-  // The arc may also be refused for a span outside [0, 2π] (with a rounding allowance for a
-  // full circle) or a circle reaching beyond the double range.
+  // The arc may also be refused for an angle beyond ±2^40, a span outside [0, 2π] (with a
+  // rounding allowance for a full circle) or a circle reaching beyond the double range.
   const Arc arc{in.b.center, in.b.radius, in.start_angle, in.end_angle};
   const double span = arc.end_angle - arc.start_angle;
   const double reach = std::max(std::abs(arc.center.x), std::abs(arc.center.y)) + arc.radius;
+  const bool angles_in_range = std::abs(arc.start_angle) <= carom::kLargestArcAngle &&
+                               std::abs(arc.end_angle) <= carom::kLargestArcAngle;
   const bool arc_surely_valid = moving_valid && valid_ball({arc.center, arc.radius}) &&
-                                std::isfinite(arc.start_angle) && std::isfinite(arc.end_angle) &&
-                                span >= 0.0 && span <= 2.0 * std::numbers::pi &&
+                                angles_in_range && span >= 0.0 && span <= 2.0 * std::numbers::pi &&
                                 std::isfinite(reach);
   // The library takes a span up to 4 ulp of the larger angle beyond 2π for the full circle.
   const double allowance = 8.0 * std::numeric_limits<double>::epsilon() *
                            std::max({std::abs(arc.start_angle), std::abs(arc.end_angle), 7.0});
-  const bool arc_surely_invalid =
-      !moving_valid || !valid_ball({arc.center, arc.radius}) || !std::isfinite(span) ||
-      span < 0.0 || span > 2.0 * std::numbers::pi + allowance || !std::isfinite(reach);
+  const bool arc_surely_invalid = !moving_valid || !valid_ball({arc.center, arc.radius}) ||
+                                  !angles_in_range || !std::isfinite(span) || span < 0.0 ||
+                                  span > 2.0 * std::numbers::pi + allowance ||
+                                  !std::isfinite(reach);
   try {
     const Impact at_arc = carom::time_of_impact_ball_arc(in.a, in.va, arc, in.horizon);
     check(!arc_surely_invalid, "an invalid arc accepted");

@@ -155,6 +155,14 @@ TEST(SceneErrors, BallAcrossAWall) {
   EXPECT_THAT(arc.problem, HasSubstr("arcs[0]"));
 }
 
+TEST(SceneErrors, ArcAngleBeyondTwoToTheForty) {
+  const auto d = error_of(
+      "{\"arcs\": [{\"center\": [0, 0], \"radius\": 10, \"start_angle\": 1e45,\n"
+      " \"end_angle\": 1e45}]}");
+  EXPECT_EQ(d.path, "arcs[0].start_angle");
+  EXPECT_THAT(d.problem, HasSubstr("must lie in [-2^40, 2^40] radians"));
+}
+
 TEST(SceneErrors, ImpossiblePackingFraction) {
   const auto d = error_of(
       "{\"world\": {\"boundary\": \"periodic\", \"lower\": [0, 0], \"upper\": [100, 100]},\n"

@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of carom_world_fuzz (tests/fuzz/corpus/world/): one file per scenario,
+encoded as world_fuzz.cpp decodes its input (kept in step with it by hand). Each seed is a short
+program worth mutating from: a gas in each boundary, walls of every kind (a point, a zero-span arc,
+a full circle), drags to the nearest free place, inelastic balls with a stop condition, a save and
+load, and invalid calls. Run it from anywhere; it rewrites the folder."""
+import pathlib
+import struct
+
+SIDE = 20.0
+OPEN, BOX, PERIODIC = 0, 1, 2
+# Opcodes (op % 12 in world_fuzz.cpp).
+ADD, REMOVE, MOVE, VELOCITY, STEP, COLLISIONS, UNTIL, SAVE, STOP, BAD = 0, 2, 3, 4, 5, 7, 8, 9, 10, 11
+
+
+def word(fraction):
+    return struct.pack("<H", round(min(max(fraction, 0.0), 1.0) * 65535))
+
+
+def position(x, y):
+    return bytes([1]) + word(x / SIDE) + word(y / SIDE)
+
+
+def velocity(speed_index, angle_fraction, axis=False):
+    return bytes([speed_index]) + word(angle_fraction) + bytes([0 if axis else 1])
+
+
+def head(boundary, restitution_index=0, fixed_cell=False):
+    return bytes([boundary + 3 * restitution_index + (0x80 if fixed_cell else 0)])
+
+
+def walls(*encoded):
+    return bytes([len(encoded)]) + b"".join(encoded)
+
+
+def segment(a, b):
+    return bytes([2]) + position(*a) + position(*b)
+
+
+def point(a):
+    return bytes([0]) + position(*a)
+
+
+def arc(center, radius, start_fraction, kind):
+    """kind: 1 zero span, 3 full circle, 5 a span of span_fraction (appended by the caller)."""
+    return bytes([kind]) + position(*center) + word((radius - 0.5) / 8.0) + word(start_fraction)
+
+
+def add(x, y, speed_index=1, angle=0.1, radius_index=0, mass_index=0, restitution=0):
+    return (bytes([ADD]) + position(x, y) + velocity(speed_index, angle) +
+            bytes([radius_index, mass_index, restitution]))
+
+
+def gas(count, speed_index=1):
+    out = b""
+    for k in range(count):
+        out += add(2.0 + 3.0 * (k % 6), 2.0 + 3.0 * (k // 6), speed_index, (k * 0.37) % 1.0)
+    return out
+
+
+def step(index, fraction=0.0):
+    return bytes([STEP, index]) + word(fraction)
+
+
+def bad(which, extra=b""):
+    """An invalid call (world_fuzz.cpp's bad_call); 0 and 4 read one more byte, 5 a ball's."""
+    return bytes([BAD, which]) + extra
+
+
+def collisions(count, unlimited=False, limit_index=2):
+    return bytes([COLLISIONS, count | (0x80 if unlimited else 0), limit_index])
+
+
+SEEDS = {
+    "box_gas": head(BOX) + walls() + gas(12) + step(2) + collisions(8, True) + step(4),
+    "periodic_gas_save": head(PERIODIC) + gas(18, 4) + collisions(8) + bytes([SAVE]) + step(0)
+    + bytes([SAVE]) + collisions(5),
+    "open_walls_drag": head(OPEN) + walls(segment((1, 1), (19, 1)), point((10, 15)),
+                                          arc((10, 10), 6.0, 0.1, 3), arc((4, 16), 2.0, 0.3, 1))
+    + add(10, 10, 1, 0.2) + add(14, 10, 2, 0.6) + bytes([MOVE, 0]) + position(10, 2) + bytes([1])
+    + bytes([UNTIL, 2]) + bytes([MOVE, 1]) + position(10, 10) + bytes([0]) + step(4),
+    "box_arcs_inelastic_stop": head(BOX, 3) + walls(arc((10, 10), 4.0, 0.0, 5) + word(0.5),
+                                                    segment((2, 18), (18, 2)))
+    + gas(8, 2) + bytes([STOP, 1]) + step(2) + step(2) + bytes([SAVE]) + step(2),
+    "tiny_and_large_box": head(BOX, 0, True) + walls()
+    + add(10, 10, 0, 0.0, 6) + add(3, 3, 6, 0.125, 5) + add(17, 3, 1, 0.4, 5) + step(2)
+    + step(7) + collisions(8, True),
+    "bad_calls_and_removal": head(OPEN) + walls() + gas(4) + bad(0, b"\x02") + bad(1) + bad(2) + bad(3)
+    + bad(4, b"\x01") + bytes([REMOVE, 1]) + bad(5, b"\x00") + gas(2) + bytes([VELOCITY, 0]) + velocity(4, 0.5)
+    + step(2),
+}
+
+
+def main():
+    folder = pathlib.Path(__file__).resolve().parent / "corpus" / "world"
+    folder.mkdir(parents=True, exist_ok=True)
+    for old in folder.iterdir():
+        old.unlink()
+    for name, data in SEEDS.items():
+        (folder / name).write_bytes(data)
+
+
+if __name__ == "__main__":
+    main()

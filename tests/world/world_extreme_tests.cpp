@@ -1,0 +1,460 @@
+// Extreme but valid input at the World level (issue 8): speeds of 10⁶ diameters per step, radii
+// from 10⁻⁶ to 10⁶ in one world, a dense packing of exactly touching disks, points as walls
+// (a zero-length segment, a zero-span arc); and the cases the world fuzzer
+// (tests/fuzz/world_fuzz.cpp) found, named after what it found. Each works exactly, to the
+// rounding stated beside it; docs/guarantees.md lists them.
+#include <gtest/gtest.h>
+#include <unistd.h>  // alarm: a watchdog for a run that might never return
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "carom/bounce.hpp"
+#include "carom/error.hpp"
+#include "carom/world.hpp"
+
+namespace carom {
+namespace {
+
+bool long_tests_enabled() {
+  const char* value = std::getenv("CAROM_LONG_TESTS");
+  return value != nullptr && std::string(value) == "1";
+}
+
+BallDef ball_at(Vec2 position, Vec2 velocity, double radius = 0.5, double mass = 1.0) {
+  BallDef def;
+  def.position = position;
+  def.velocity = velocity;
+  def.radius = radius;
+  def.mass = mass;
+  return def;
+}
+
+double momentum_scale(const World& world) {
+  double sum = 0.0;
+  for (const BallId id : world.balls()) sum += world.mass(id) * length(world.velocity(id));
+  return sum;
+}
+
+// ---- 10⁶ diameters per step ---------------------------------------------------------------------
+
+constexpr double kMillionDiametersPerStep = 1e6;  // diameter 1, step 1
+
+TEST(WorldExtreme, MillionDiametersPerStepBetweenTwoWalls) {
+  // A ball of diameter 1 in a box 10 wide crosses the 9 units its centre can travel 111 111
+  // times in one step: every wall contact is made, and it ends where the unfolded path says.
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {10.0, 10.0};
+  World world(def);
+  const BallId ball = world.add_ball(ball_at({5.0, 5.0}, {kMillionDiametersPerStep, 0.0}));
+  world.step(1.0);
+  // The centre moves in [0.5, 9.5]; unfolded it travels 4.5 + 10⁶ from the left end, and the
+  // path folds with period 18: 10⁶ = 55 555·18 + 10, so it is 14.5 along a fold, on the way
+  // back from the right wall: at x = 0.5 + 18 − 14.5 = 4, moving left.
+  EXPECT_EQ(world.contacts().size(), 111111u);
+  EXPECT_EQ(world.collision_count(), 111111u);
+  // Contact times add up 9e-6 at a time near t ~ 0.5, each sum rounded by up to half an ulp
+  // (5.6e-17), the same way each time: over 1.1e5 contacts up to 6e-12 in time, 6e-6 in position
+  // at speed 10⁶. 1e-5 allows that and is far below the 9 units one missed contact would cost.
+  EXPECT_NEAR(world.position(ball).x, 4.0, 1e-5);
+  EXPECT_EQ(world.position(ball).y, 5.0);
+  EXPECT_EQ(world.velocity(ball).x, -kMillionDiametersPerStep);  // a wall bounce negates exactly
+  EXPECT_FALSE(world.audit().has_value());
+}
+
+TEST(WorldExtreme, MillionDiametersPerStepHeadOn) {
+  World world;
+  const BallId a = world.add_ball(ball_at({-5.0, 0.0}, {kMillionDiametersPerStep, 0.0}));
+  const BallId b = world.add_ball(ball_at({5.0, 0.0}, {-kMillionDiametersPerStep, 0.0}));
+  world.step(1.0);
+  ASSERT_EQ(world.contacts().size(), 1u);
+  // They meet when the 9-unit gap closes at 2·10⁶: t = 4.5e-6, to rounding.
+  EXPECT_NEAR(world.contacts()[0].time, 4.5e-6, 1e-18);
+  EXPECT_LT(world.position(a).x, world.position(b).x);  // no tunnelling
+  EXPECT_EQ(world.velocity(a).x, -kMillionDiametersPerStep);
+  EXPECT_EQ(world.velocity(b).x, kMillionDiametersPerStep);
+}
+
+// ---- radii from 10⁻⁶ to 10⁶ -------------------------------------------------------------------
+
+TEST(WorldExtreme, RadiiFromAMillionthToAMillionInOneWorld) {
+  // An immovable ball of radius 10⁶ at the origin; balls of radius 10⁻⁶, 10⁻³, 1 and 10³ fly
+  // at it from four sides, and two balls of radius 10⁻⁶ meet head-on beside it. The grid's cells
+  // follow the largest diameter, so every small ball shares one cell: slow, but exact.
+  World world;
+  world.add_ball(ball_at({0.0, 0.0}, {}, 1e6, kImmovable));
+  const double big = 1e6;
+  struct Shot {
+    BallDef def;
+    double contact_time;
+  };
+  const Shot shots[] = {
+      {ball_at({big + 10.0, 0.0}, {-1.0, 0.0}, 1e-6), 10.0 - 1e-6},
+      {ball_at({0.0, big + 20.0}, {0.0, -2.0}, 1e-3), (20.0 - 1e-3) / 2.0},
+      {ball_at({-(big + 30.0), 0.0}, {3.0, 0.0}, 1.0), (30.0 - 1.0) / 3.0},
+      {ball_at({0.0, -(big + 1e3 + 40.0)}, {0.0, 4.0}, 1e3), 40.0 / 4.0},
+  };
+  std::vector<BallId> ids;
+  for (const Shot& shot : shots) ids.push_back(world.add_ball(shot.def));
+  // Head-on beside the big ball: 10 units apart, closing at 2: they touch at 5 − 10⁻⁶.
+  const BallId up = world.add_ball(ball_at({big + 100.0, -5.0}, {0.0, 1.0}, 1e-6));
+  const BallId down = world.add_ball(ball_at({big + 100.0, 5.0}, {0.0, -1.0}, 1e-6));
+  const double energy = world.kinetic_energy();
+  world.run_until(20.0);
+  // Positions near 10⁶ are doubles 1.2e-10 apart, so contact times hold to about that over unit
+  // speeds; 1e-9 is ten of those, and far below any other time scale of the scene.
+  constexpr double kTimeTol = 1e-9;
+  ASSERT_EQ(world.contacts().size(), 5u);
+  for (const ContactEvent& contact : world.contacts()) {
+    if (contact.b == up || contact.b == down || contact.a == up) {
+      EXPECT_NEAR(contact.time, 5.0 - 1e-6, kTimeTol) << "the tiny pair";
+      continue;
+    }
+    bool matched = false;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      if (contact.a == ids[k] || contact.b == ids[k]) {
+        EXPECT_NEAR(contact.time, shots[k].contact_time, kTimeTol) << "shot " << k;
+        matched = true;
+      }
+    }
+    EXPECT_TRUE(matched);
+  }
+  // Each shot bounced straight back off the immovable ball; the tiny pair swapped velocities.
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const Vec2 v = world.velocity(ids[k]);
+    EXPECT_NEAR(v.x, -shots[k].def.velocity.x, 1e-9) << "shot " << k;
+    EXPECT_NEAR(v.y, -shots[k].def.velocity.y, 1e-9) << "shot " << k;
+  }
+  EXPECT_NEAR(world.velocity(up).y, -1.0, 1e-12);
+  EXPECT_NEAR(world.velocity(down).y, 1.0, 1e-12);
+  EXPECT_NEAR(world.kinetic_energy(), energy, 1e-9 * energy);
+  EXPECT_FALSE(world.audit().has_value());
+  EXPECT_FALSE(world.audit_all_pairs().has_value());
+}
+
+// ---- a dense packing of exactly touching disks --------------------------------------------------
+
+// side × side disks of diameter 1 (side a multiple of 10) in blocks of 10 × 10 on the integer
+// lattice, one unit of space between blocks, in a periodic cell 1.1·side wide: every disk touches
+// its neighbours in its block exactly (the centres' differences are exact integers), so pairs
+// that approach collide at time 0 (packing fraction π/4/1.21 = 0.65). Along a row (or column) of
+// 10 touching disks of equal mass, the contacts at time 0 only swap velocity components, like a
+// bubble sort: at most 45 per row, so time then moves on. The gaps matter: a closed ring of
+// touching disks is jammed (DISABLED_JammedRowOfTouchingBallsAdvances).
+World touching_square_packing(int side, std::uint64_t seed) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  const double cell = side + side / 10;
+  def.upper = {cell, cell};
+  World world(def);
+  std::mt19937_64 engine(seed);
+  std::normal_distribution<double> component(0.0, 1.0);
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const Vec2 velocity{component(engine), component(engine)};
+      world.add_ball(ball_at({i + i / 10 + 0.5, j + j / 10 + 0.5}, velocity));
+    }
+  }
+  return world;
+}
+
+void run_touching_packing(int side, std::uint64_t collisions) {
+  World world = touching_square_packing(side, 7);
+  ASSERT_EQ(world.ball_count(), static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
+  ASSERT_FALSE(world.audit().has_value());
+  world.set_contact_recording(false);
+  const double energy = world.kinetic_energy();
+  const Vec2 momentum = world.momentum();
+  const double scale = momentum_scale(world);
+  world.set_contact_recording(true);
+  // The first contact is at time 0: some neighbours approach each other from the start.
+  ASSERT_EQ(world.run_collisions(1), 1u);
+  EXPECT_EQ(world.contacts()[0].time, 0.0);
+  world.set_contact_recording(false);
+  EXPECT_EQ(world.run_collisions(collisions), collisions);
+  EXPECT_GT(world.time(), 0.0);
+  EXPECT_FALSE(world.audit().has_value());
+  // Issue 3's bounds (tests/world/world_conservation_tests.cpp): each bounce rounds energy and
+  // momentum by ~1e-16 of the pair's, a drift of ~√n·1e-16 over n contacts.
+  EXPECT_NEAR(world.kinetic_energy(), energy, 1e-10 * energy);
+  EXPECT_LE(length(world.momentum() - momentum), 1e-12 * scale);
+}
+
+TEST(WorldExtreme, TenThousandTouchingDisksCollideAndStayApart) {
+  // At most 45·10·100·2 = 90 000 contacts at time 0, then the gas moves.
+  run_touching_packing(100, 200000);
+}
+
+TEST(WorldExtreme, MillionTouchingDisksCollideAndStayApartLong) {
+  if (!long_tests_enabled()) GTEST_SKIP() << "set CAROM_LONG_TESTS=1";
+  run_touching_packing(1000, 20000000);
+}
+
+// A row of balls touching end to end around a periodic cell (or from wall to wall of a box) is
+// jammed: no ball can move along the row unless all do, yet the engine resolves the contacts at
+// time 0 one by one, for ever (each bounce passes the relative motion on around the ring). So
+// run_collisions(k) returns k with the time still 0, and step(dt) never returns. Disabled until
+// the engine detects it (reported to the lead; src/world_engine.cpp is not this test's to edit).
+TEST(WorldExtreme, DISABLED_JammedRowOfTouchingBallsAdvances) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {4.0, 4.0};
+  World world(def);
+  for (int i = 0; i < 4; ++i) {
+    world.add_ball(ball_at({i + 0.5, 2.0}, {i == 0 ? 1.0 : 0.0, 0.0}));
+  }
+  world.run_collisions(100000);
+  EXPECT_GT(world.time(), 0.0) << "100 000 contacts at time 0";
+}
+
+// A ball touching the inside of a full circle and moving along it (normal speed 0) leaves the
+// circle at once: the contact rule "touching and not approaching is no contact" (right for flat
+// and convex walls, along which such a ball slides clear) is wrong for a concave wall, where the
+// gap closes at second order. Reporting a contact at time 0 instead would bounce at normal speed
+// 0, change nothing and repeat for ever: it needs a decision in the engine (reported to the lead;
+// src/sweep.cpp and src/world_engine.cpp). The world fuzzer found it (nearest_free into a bowl,
+// then an axis-aligned velocity) and stops an input that makes such a ball.
+TEST(WorldExtreme, DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside) {
+  World world;
+  world.add_arc({{20.0, 20.0}, 8.5, std::numbers::pi, 3.0 * std::numbers::pi});
+  world.add_ball(ball_at({20.0, 12.0}, {7.0, 0.0}));  // touching the circle exactly, at its bottom
+  world.step(0.0121);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// ---- points as walls -------------------------------------------------------------------------
+
+// A ball of radius 0.5 at (-3, 0.3) moving at (1, 0) meets a point at the origin when it is 0.4
+// left of it: t = 2.6, normal (0.8, -0.6), and leaves at v − 2(v·n)n = (−0.28, 0.96).
+void expect_point_bounce(World& world) {
+  const BallId ball = world.add_ball(ball_at({-3.0, 0.3}, {1.0, 0.0}));
+  world.step(4.0);
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const ContactEvent& contact = world.contacts()[0];
+  EXPECT_EQ(contact.kind, ContactKind::ball_wall);
+  EXPECT_NEAR(contact.time, 2.6, 1e-12);
+  EXPECT_NEAR(contact.point.x, 0.0, 1e-12);
+  EXPECT_NEAR(contact.point.y, 0.0, 1e-12);
+  EXPECT_NEAR(contact.normal.x, 0.8, 1e-12);
+  EXPECT_NEAR(contact.normal.y, -0.6, 1e-12);
+  EXPECT_NEAR(world.velocity(ball).x, -0.28, 1e-12);
+  EXPECT_NEAR(world.velocity(ball).y, 0.96, 1e-12);
+  EXPECT_FALSE(world.audit().has_value());
+}
+
+TEST(WorldExtreme, ZeroLengthSegmentIsAPoint) {
+  World world;
+  world.add_segment({{0.0, 0.0}, {0.0, 0.0}});
+  expect_point_bounce(world);
+}
+
+TEST(WorldExtreme, ZeroSpanArcIsAPoint) {
+  World world;
+  world.add_arc({{-1.0, 0.0}, 1.0, 0.0, 0.0});  // the point (−1 + cos 0, sin 0) = (0, 0)
+  expect_point_bounce(world);
+}
+
+TEST(WorldExtreme, BallPlacedOnAPointWallIsRefused) {
+  World world;
+  world.add_segment({{0.0, 0.0}, {0.0, 0.0}});
+  EXPECT_THROW(world.add_ball(ball_at({0.2, 0.0}, {})), InvalidArgument);
+  EXPECT_NO_THROW(world.add_ball(ball_at({0.5, 0.0}, {})));  // touching exactly is allowed
+}
+
+TEST(WorldExtreme, ArcAngleBeyondTwoToTheFortyIsRefused) {
+  World world;
+  try {
+    world.add_arc({{0.0, 0.0}, 5.0, 1e45, 1e45 + 1.5e29});
+    ADD_FAILURE() << "a span of 1.5e29 was taken for a full circle";
+  } catch (const InvalidArgument& error) {
+    EXPECT_EQ(error.function(), "World::add_arc");
+    EXPECT_EQ(error.argument(), "arc.start_angle");
+  }
+  EXPECT_EQ(world.wall_count(), 0u);
+  // At the bound a full circle is still a full circle: a ball inside it stays inside.
+  world.add_arc({{0.0, 0.0}, 5.0, -kLargestArcAngle, -kLargestArcAngle + 2.0 * std::numbers::pi});
+  world.add_ball(ball_at({0.0, 0.0}, {3.0, 1.0}));
+  world.step(10.0);
+  EXPECT_GT(world.contacts().size(), 3u);
+  EXPECT_FALSE(world.audit().has_value());
+}
+
+// ---- found by the world fuzzer --------------------------------------------------------------
+
+// An open world with no ball plans a grid of cells of size 0; save wrote it and load refused it
+// ("a grid has finite positive cells").
+TEST(WorldFuzzFound, EmptyOpenWorldSavesAndLoads) {
+  World world;
+  EXPECT_EQ(world.run_collisions(7, 1.0), 0u);
+  std::stringstream bytes(std::ios::in | std::ios::out | std::ios::binary);
+  world.save(bytes);
+  World loaded = World::load(bytes);
+  EXPECT_EQ(loaded.time(), world.time());
+  const BallId a = loaded.add_ball(ball_at({0.0, 0.0}, {1.0, 0.0}));
+  const BallId b = world.add_ball(ball_at({0.0, 0.0}, {1.0, 0.0}));
+  loaded.step(1.0);
+  world.step(1.0);
+  EXPECT_EQ(loaded.position(a), world.position(b));
+}
+
+// A ball of radius 1e-6 bouncing between the walls of a box 20 wide, at speed 1e-9 for 10¹¹
+// time units: no double centre touches x = 20 exactly (ulp(20) = 3.6e-15 > 10⁻⁹·10⁻⁶), and the
+// event times are rounded to 10⁻⁵ (|v|·ulp(t) = 10⁻¹⁴ in position). The audit reported "reaches
+// outside the box"; it now allows the rounding of positions as well as 10⁻⁹ of the radius.
+TEST(WorldFuzzFound, TinySlowBallBetweenBoxWallsPassesTheAudit) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {20.0, 20.0};
+  World world(def);
+  const BallId ball =
+      world.add_ball(ball_at({8.8432135500114448, 8.8523689631494626},
+                             {-9.9990667325760514e-10, -1.3661799841489198e-11}, 1e-6, 3.0));
+  for (int contact = 0; contact < 7; ++contact) {
+    ASSERT_EQ(world.run_collisions(1), 1u);
+    EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+    // What the audit allows is a rounding: within 1e-13 of the box (30 ulps of 20).
+    const Vec2 p = world.position(ball);
+    EXPECT_GE(p.x - 1e-6, -1e-13);
+    EXPECT_LE(p.x + 1e-6, 20.0 + 1e-13);
+  }
+}
+
+// A drag across the periodic cell's edge: the target's image in the cell held another ball, which
+// the sweep (against each ball's nearest image only) missed, so nearest_free put one ball on top
+// of the other. It now goes the shortest way and meets every image within reach.
+TEST(WorldFuzzFound, PeriodicDragStopsAtTheImageOfABall) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {20.0, 20.0};
+  World world(def);
+  const BallId still = world.add_ball(ball_at({20.0, 20.0}, {}, 0.1, 3.0));  // wraps to (0, 0)
+  const BallId dragged = world.add_ball(ball_at({16.797436484321359, 40.0}, {}, 0.1, 3.0));
+  const Vec2 placed = world.set_position(dragged, {20.0, 20.0}, Placement::nearest_free);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+  // The shortest way from (16.8, 0) to (0, 0) ≡ (20, 0) runs along +x; it stops touching.
+  Vec2 gap = world.position(still) - placed;
+  gap.x -= 20.0 * std::round(gap.x / 20.0);
+  gap.y -= 20.0 * std::round(gap.y / 20.0);
+  EXPECT_NEAR(length(gap), 0.2, 1e-12);
+}
+
+// Two immovable balls pass through each other (docs/world.md: nothing could respond); the audit
+// reported their overlap as a violation.
+TEST(WorldFuzzFound, ImmovableBallsPassingThroughEachOtherPassTheAudit) {
+  World world;
+  world.add_ball(ball_at({-2.0, 0.0}, {1.0, 0.0}, 0.5, kImmovable));
+  world.add_ball(ball_at({2.0, 0.0}, {-1.0, 0.0}, 0.5, kImmovable));
+  world.step(2.0);  // centres coincide at t = 2
+  EXPECT_TRUE(world.contacts().empty());
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// Two balls in an open world approaching each other at 1.2e-16 along a line that passes them 14
+// units apart: they never meet, but the pair is not "moving apart", and run_collisions without a
+// time limit followed cell crossings for ever (closest approach at t = 3e17). The proof now
+// accepts a pair whose relative line clears the two radii. The alarm ends a hang as a failure.
+TEST(WorldFuzzFound, ApproachingPairThatMissesEndsRunCollisions) {
+  World world;
+  world.add_ball(ball_at({27.058823529411761, -5.9885557335774777}, {0.5, 0.0}));
+  world.add_ball(
+      ball_at({13.101396200503551, 29.582970931563281}, {0.5, -1.2246467991473532e-16}, 0.1));
+  alarm(60);
+  EXPECT_EQ(world.run_collisions(6), 0u);
+  alarm(0);
+}
+
+// Found by the world fuzzer: two elastic balls in a periodic cell 20 wide, radii 3 and 2, one at
+// speed 100. Their contact near t = 0.97 was missed (found 0.44 deep): with three grid cells per
+// axis a pair can meet through an image that was not the nearest when it was predicted. Fixed
+// by trying the nine images in grids under 7 cells a side (docs/world.md, "Boundaries").
+TEST(WorldFuzzFound, LargeBallsInAPeriodicCellMeet) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {20.0, 20.0};
+  World world(def);
+  world.add_ball(ball_at({-19.8974593728542, -10.858319981689172},
+                         {10.886588208720136, 99.405644694724231}, 3.0, 0.001));
+  world.add_ball(ball_at({10.95170519569696, 37.012588693064771},
+                         {0.47830220975022036, -0.14569487344466245}, 2.0, 0.001));
+  for (int k = 1; k <= 100; ++k) {
+    world.run_until(k * 0.01);
+    ASSERT_FALSE(world.audit().has_value()) << "at t = " << world.time() << ": " << *world.audit();
+  }
+}
+
+// The same bug (a ball of radius 3 again): a periodic cell with an immovable ball moving at 7, a
+// ball of radius 3 and a small one, e = 0.5 with the collapse guard. After the contact at
+// t = 7.80 (balls 1 and 2) the next one, at t = 10.47, was balls 0 and 1 found 3.2 deep into each
+// other.
+TEST(WorldFuzzFound, ImmovableBallInAPeriodicCellMeetsEveryBall) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {20.0, 20.0};
+  def.restitution = 0.5;
+  def.collapse_time = 1e-3;
+  World world(def);
+  world.add_ball(ball_at({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0, kImmovable));
+  world.add_ball(ball_at({12.866102082856489, 8.8926527809567411}, {}, 3.0, 3.0));
+  world.add_ball(ball_at({4.6088349736781868, 9.9821469443808652},
+                         {-6.9994687708038139, 0.086237616746669701}, 0.1, 3.0));
+  for (const double limit :
+       {20.0, 21.269235050812124, 23.359326771049489, 25.96484328942498, 27.803385482371851}) {
+    world.run_collisions(1, limit);
+    ASSERT_FALSE(world.audit().has_value()) << "at t = " << world.time() << ": " << *world.audit();
+  }
+}
+
+// Found by the world fuzzer under UBSan: an open world whose only wall is a point and that has no
+// ball planned a grid of cells of size 0 (largest radius 0, extent 0), and Grid::column_of turned
+// (x − lower)/0 = NaN into an int: undefined behaviour (seen only under the sanitizers, which
+// run this test in make test-asan). Cells are now of size 1 there.
+TEST(WorldFuzzFound, PointWallAloneInAnOpenWorld) {
+  World world;
+  world.add_segment({{0.0, 0.0}, {0.0, 0.0}});
+  world.step(1.0);
+  EXPECT_EQ(world.time(), 1.0);
+}
+
+// Found by the world fuzzer (tests/fuzz/crashes/world-ball-dragged-against-inside-of-arc.txt):
+// set_position's nearest_free stopped a ball exactly on the circle along which it touches the
+// inside of a full arc, and moving outwards it then left through the arc (0.08 beyond it after
+// 0.1 time units): the arc's exit crossing was at t = 0, which it did not report. It now touches
+// at once and bounces back.
+TEST(WorldFuzzFound, BallDraggedAgainstTheInsideOfAnArcBouncesBack) {
+  World world;
+  world.add_segment(
+      {{1.0000762951094835, 1.0000762951094835}, {18.999923704890517, 1.0000762951094835}});
+  world.add_segment(
+      {{10.000152590218967, 14.999923704890517}, {10.000152590218967, 14.999923704890517}});
+  const Vec2 center{10.000152590218967, 10.000152590218967};
+  const WallId bowl =
+      world.add_arc({center, 5.9999618524452583, -2.5132261852407431, 3.7699591219388431});
+  world.add_arc({{4.0, 16.0}, 2.000022888532845, -1.256684999067009, -1.256684999067009});
+  const BallId ball =
+      world.add_ball(ball_at({13.999847409781033, 10.000152590218967}, {3.0, 0.0}, 0.5, 1.0));
+  world.set_position(ball, {10.000152590218967, 2.000152590218967}, Placement::nearest_free);
+  world.set_contact_recording(true);
+  world.run_until(0.10000000000000001);
+  ASSERT_FALSE(world.contacts().empty());
+  EXPECT_EQ(world.contacts()[0].time, 0.0);
+  EXPECT_EQ(world.contacts()[0].wall, bowl);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+  EXPECT_LT(length(world.position(ball) - center), 5.9999618524452583 - 0.5);
+}
+
+}  // namespace
+}  // namespace carom

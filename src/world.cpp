@@ -266,7 +266,7 @@ std::size_t World::wall_count() const noexcept { return impl_->walls.size(); }
 double World::step(double dt) {
   detail::require_non_negative("World::step", "dt", dt);
   const double start = impl_->time;
-  impl_->run(start + dt, std::numeric_limits<std::uint64_t>::max());
+  impl_->run("World::step", start + dt, std::numeric_limits<std::uint64_t>::max());
   return impl_->stopped ? impl_->time - start : dt;
 }
 
@@ -277,7 +277,7 @@ double World::run_until(double time) {
            "must not be before the world's time " + number(impl_->time));
   }
   const double start = impl_->time;
-  impl_->run(time, std::numeric_limits<std::uint64_t>::max());
+  impl_->run("World::run_until", time, std::numeric_limits<std::uint64_t>::max());
   return impl_->time - start;
 }
 
@@ -286,7 +286,7 @@ std::uint64_t World::run_collisions(std::uint64_t count) {
     impl_->contacts.clear();
     return 0;
   }
-  return impl_->run(std::numeric_limits<double>::infinity(), count);
+  return impl_->run("World::run_collisions", std::numeric_limits<double>::infinity(), count);
 }
 
 std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
@@ -300,7 +300,7 @@ std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
     impl_->contacts.clear();
     return 0;
   }
-  return impl_->run(time_limit, count);
+  return impl_->run(kFunction, time_limit, count);
 }
 
 void World::set_stop_condition(std::function<bool(const ContactEvent&)> condition) {

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 
+#include "carom/error.hpp"
 #include "circle_crossing.hpp"
 #include "pair_batch.hpp"
 #include "permute.hpp"
+#include "validate.hpp"
 #include "world_impl.hpp"
 
 // GCC and clang both spell it this way; on a lambda it goes after the parameter list.
@@ -51,6 +54,11 @@ constexpr std::int32_t kInteriorMinCells = 5;
 // by under two cells per axis, and a pair that touches (within one cell) was within three cells
 // when predicted, under half a period from 7 cells on (6 leaves no room for the cell margin).
 constexpr std::int32_t kSingleImageMinCells = 7;
+// Contacts at one instant beyond this many per ball (plus a floor) mean a jammed chain of
+// touching balls, whose contacts at that instant never end (docs/world.md, "Known limits"): a
+// Newton's cradle has one per ball, a break from rest a few.
+constexpr std::uint64_t kInstantContactsPerBall = 100;
+constexpr std::uint64_t kInstantContactsFloor = 1 << 20;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
@@ -357,7 +365,7 @@ void World::Impl::predict(std::uint32_t ball) {
 
 // ---- the event loop -----------------------------------------------------------------------
 
-std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
+std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t max_contacts) {
   contacts.clear();
   stopped = false;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
@@ -369,6 +377,9 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   // it; each failed proof doubles the stretch before the next, so proofs (O(N²)) stay rare.
   std::uint64_t without_contact = 0;
   std::uint64_t next_proof = std::max<std::uint64_t>(kEventsBeforeProof, 2 * live_count);
+  // Contacts at the world's present instant: a jammed chain of touching balls has them for ever.
+  double instant = -kInfinity;
+  std::uint64_t at_instant = 0;
   for (;;) {
     if (++events_since_sort > kSortEvents * live_count + kSortMinEvents) sort_by_cell();
     const Event event = queue.top();
@@ -385,6 +396,12 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
     without_contact = 0;
     ++resolved;
     ++collisions;
+    if (time != instant) {
+      instant = time;
+      at_instant = 0;
+    } else if (++at_instant > kInstantContactsPerBall * live_count + kInstantContactsFloor) {
+      refuse_jammed(function, at_instant);
+    }
     const bool stop = stop_condition && stop_condition(last_contact);
     if (stop || resolved == max_contacts) {
       stopped = stop;
@@ -395,6 +412,14 @@ std::uint64_t World::Impl::run(double end, std::uint64_t max_contacts) {
   // splitting a run into steps changes nothing (no re-rounding of positions at step ends).
   if (end < kInfinity) time = end;
   return resolved;
+}
+
+void World::Impl::refuse_jammed(const char* function, std::uint64_t count) const {
+  throw InvalidArgument(
+      function, "world", std::to_string(count) + " contacts at t = " + detail::number_text(time),
+      "has balls jammed: a closed chain of exactly touching balls (a row around the periodic "
+      "cell, or from wall to wall) passes its contacts on at one instant for ever; leave a gap "
+      "(docs/world.md, \"Known limits\")");
 }
 
 bool World::Impl::process(const Event& event) {

@@ -175,11 +175,13 @@ struct World::Impl {
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
   // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts.
-  std::uint64_t run(double end, std::uint64_t max_contacts);
+  // Throws InvalidArgument (naming `function`) when contacts at one instant do not end.
+  std::uint64_t run(const char* function, double end, std::uint64_t max_contacts);
   // True only when no contact can ever happen again, by the rules in world_no_contact.cpp;
   // false means "not proven", not "a contact will happen".
   [[nodiscard]] bool no_contact_ever() const;
   bool process(const detail::Event& event);  // true when a contact was resolved
+  [[noreturn]] void refuse_jammed(const char* function, std::uint64_t count) const;
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);

@@ -2,7 +2,6 @@
 
 #include <sys/resource.h>
 
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -10,7 +9,6 @@
 #include <memory>
 #include <string>
 #include <string_view>
-#include <system_error>
 
 #include "bench_report.hpp"
 #include "exit_codes.hpp"
@@ -52,19 +50,6 @@ struct BenchSettings {
   std::uint64_t collisions = 0;
 };
 
-// A whole non-negative decimal integer: digits only, no sign, no spaces.
-std::uint64_t parse_count(std::string_view option, std::string_view text,
-                          std::string_view expected) {
-  const OptionValue value{option, text, expected};
-  if (text.empty()) reject(value, "a number is missing");
-  std::uint64_t number = 0;
-  const char* const end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, number);
-  if (error == std::errc::result_out_of_range) reject(value, "the number is too large");
-  if (error != std::errc{} || stop != end) reject(value, "not a whole number");
-  return number;
-}
-
 // round(per_ball · n) collisions; per_ball must be a finite number >= minimum.
 std::uint64_t parse_collisions(std::string_view option, std::string_view text, std::uint64_t n,
                                bool zero_allowed) {
@@ -87,7 +72,7 @@ std::uint64_t parse_collisions(std::string_view option, std::string_view text, s
 
 BenchSettings parse(const BenchOptions& options) {
   BenchSettings settings;
-  const std::uint64_t n = parse_count("--n", options.n, "a whole number >= 2");
+  const std::uint64_t n = parse_whole_number({"--n", options.n, "a whole number >= 2"});
   if (n < 2) {
     throw UsageError("--n", options.n, "at least 2 disks are needed for a collision");
   }
@@ -122,7 +107,7 @@ BenchSettings parse(const BenchOptions& options) {
       parse_collisions("--collisions-per-ball", options.collisions_per_ball, n, false);
   settings.equilibration_collisions =
       parse_collisions("--equilibrate", options.equilibrate, n, true);
-  settings.seed = parse_count("--seed", options.seed, "a whole number >= 0");
+  settings.seed = parse_whole_number({"--seed", options.seed, "a whole number >= 0"});
   return settings;
 }
 

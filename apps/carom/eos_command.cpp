@@ -134,7 +134,8 @@ int run(const EosOptions& options) {
   std::vector<GasSpec> specs;
   specs.reserve(etas.size());
   for (const double eta : etas) specs.push_back(parse_gas_spec(options.gas, eta, options.etas));
-  const std::uint64_t threads = parse_whole("--threads", options.threads, "a whole number >= 1");
+  const std::uint64_t threads =
+      parse_whole_number({"--threads", options.threads, "a whole number >= 1"});
   if (threads < 1 || threads > kMostThreads) {
     throw UsageError("--threads", options.threads, "between 1 and 256 threads");
   }

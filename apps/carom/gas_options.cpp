@@ -1,10 +1,8 @@
 #include "gas_options.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <numeric>
-#include <system_error>
 
 #include "option_value.hpp"
 #include "readable_number.hpp"
@@ -48,18 +46,6 @@ std::vector<double> diameters_of(std::uint64_t n, double second_diameter, double
 
 }  // namespace
 
-std::uint64_t parse_whole(const std::string& option, const std::string& text,
-                          const std::string& expected) {
-  const OptionValue value{option, text, expected};
-  if (text.empty()) reject(value, "a number is missing");
-  std::uint64_t number = 0;
-  const char* const end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, number);
-  if (error == std::errc::result_out_of_range) reject(value, "the number is too large");
-  if (error != std::errc{} || stop != end) reject(value, "not a whole number");
-  return number;
-}
-
 GasSpec parse_gas_spec(const GasOptionText& text) {
   const OptionValue eta_value{"--eta", text.eta, "a number in (0, 0.9069)"};
   return parse_gas_spec(text, parse_finite_number(text.eta, eta_value), text.eta);
@@ -67,7 +53,7 @@ GasSpec parse_gas_spec(const GasOptionText& text) {
 
 GasSpec parse_gas_spec(const GasOptionText& text, double eta, const std::string& eta_text) {
   GasSpec spec;
-  spec.n = parse_whole("--n", text.n, "a whole number >= 2");
+  spec.n = parse_whole_number({"--n", text.n, "a whole number >= 2"});
   if (spec.n < 2) throw UsageError("--n", text.n, "at least 2 disks are needed for a collision");
   if (spec.n > kMaxDisks) {
     throw UsageError("--n", text.n, "at most " + std::to_string(kMaxDisks) + " disks");
@@ -121,8 +107,8 @@ GasSpec parse_gas_spec(const GasOptionText& text, double eta, const std::string&
                      "more than 2^53 collisions in all");
   }
   spec.equilibration_collisions = static_cast<std::uint64_t>(std::round(equilibrate * count));
-  spec.seed = parse_whole("--seed", text.seed, "a whole number >= 0");
-  spec.blocks = parse_whole("--blocks", text.blocks, "a whole number in [2, 1000]");
+  spec.seed = parse_whole_number({"--seed", text.seed, "a whole number >= 0"});
+  spec.blocks = parse_whole_number({"--blocks", text.blocks, "a whole number in [2, 1000]"});
   if (spec.blocks < kFewestBlocks || spec.blocks > kMostBlocks) {
     throw UsageError("--blocks", text.blocks, "between 2 and 1000 blocks");
   }

@@ -33,9 +33,6 @@ struct GasSpec {
   std::uint64_t blocks = 0;
 };
 
-// Parses a whole non-negative integer; throws UsageError naming the option.
-[[nodiscard]] std::uint64_t parse_whole(const std::string& option, const std::string& text,
-                                        const std::string& expected);
 // Parses and checks every option, eta included; throws UsageError for the first bad one.
 [[nodiscard]] GasSpec parse_gas_spec(const GasOptionText& text);
 // The same with a packing fraction given as a number (for each point of `carom eos`).

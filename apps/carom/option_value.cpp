@@ -30,4 +30,15 @@ double parse_finite_number(std::string_view item, const OptionValue& value) {
   return number;
 }
 
+std::uint64_t parse_whole_number(const OptionValue& value) {
+  const std::string_view text = value.text;
+  if (text.empty()) reject(value, "a number is missing");
+  std::uint64_t number = 0;
+  const char* const end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, number);
+  if (error == std::errc::result_out_of_range) reject(value, "the number is too large");
+  if (error != std::errc{} || stop != end) reject(value, "not a whole number");
+  return number;
+}
+
 }  // namespace carom::cli

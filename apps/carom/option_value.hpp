@@ -1,6 +1,7 @@
 // carom tool: reading numbers out of an option's text, with messages that point at the bad part.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -21,5 +22,9 @@ struct OptionValue {
 // every character and is finite. Rejects empty text, spaces, trailing characters ("1.5x"),
 // "nan" and "inf", and numbers beyond the range of a double, by calling reject().
 [[nodiscard]] double parse_finite_number(std::string_view item, const OptionValue& value);
+
+// value.text read as a whole non-negative decimal integer: digits only, no sign, no spaces.
+// Rejects empty text, any other character and numbers beyond 2^64 - 1, by calling reject().
+[[nodiscard]] std::uint64_t parse_whole_number(const OptionValue& value);
 
 }  // namespace carom::cli

@@ -258,18 +258,8 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
   } catch (const std::exception& error) {
     damaged(file, std::string("the world in it: ") + error.what());
   }
-  // World::save leaves out the stop condition (a function). make_world sets one that ends a run
-  // at each pocket contact so that step_scene can remove the ball; without it a pocket would be an
-  // immovable ball that balls bounce off. The same condition as make_world's.
-  if (!pockets.empty()) {
-    world->set_stop_condition([pockets](const ContactEvent& contact) {
-      const auto is_pocket = [&](BallId id) {
-        return std::find(pockets.begin(), pockets.end(), id) != pockets.end();
-      };
-      return contact.kind == ContactKind::ball_ball &&
-             (is_pocket(contact.a) || is_pocket(contact.b));
-    });
-  }
+  // World::save leaves out the stop condition (a function): make_world's again.
+  if (!pockets.empty()) stop_at_pocket_contacts(*world, pockets);
   return {SceneWorld{std::move(*world), std::move(scene), std::move(balls), std::move(pockets),
                      std::move(by_name), start_time},
           std::move(progress)};

@@ -1,7 +1,6 @@
 #include "run_command.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -9,7 +8,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "atomic_file.hpp"
@@ -66,12 +64,7 @@ struct RunPlan {
 
 std::uint64_t parse_count(std::string_view option, std::string_view text) {
   const OptionValue value{option, text, "a whole number >= 1"};
-  if (text.empty()) reject(value, "a number is missing");
-  std::uint64_t number = 0;
-  const char* const end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, number);
-  if (error == std::errc::result_out_of_range) reject(value, "the number is too large");
-  if (error != std::errc{} || stop != end) reject(value, "not a whole number");
+  const std::uint64_t number = parse_whole_number(value);
   if (number == 0) reject(value, "must be at least 1");
   return number;
 }

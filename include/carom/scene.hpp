@@ -193,6 +193,12 @@ struct SceneWorld {
 // follow the scene). Throws SceneError for a scene the world refuses.
 [[nodiscard]] SceneWorld make_world(const Scene& scene);
 
+// The stop condition make_world gives a world with pockets: a run ends right after each contact
+// between a pocket and a ball, so that step_scene can remove the ball (without it a pocket is an
+// immovable ball that others bounce off). World::save leaves stop conditions out (they are
+// functions), so a world loaded from a checkpoint needs this again.
+void stop_at_pocket_contacts(World& world, std::vector<BallId> pockets);
+
 // A ball that fell into a pocket.
 struct PottedBall {
   double time = 0.0;     // scene time

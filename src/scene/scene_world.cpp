@@ -1,6 +1,7 @@
 // Building a world from a scene, running it with pockets, and reading its state back.
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "carom/error.hpp"
 #include "carom/scene.hpp"
@@ -117,13 +118,15 @@ SceneWorld make_world(const Scene& scene) {
       throw world_refused("pockets[" + std::to_string(k) + "]", error);
     }
   }
-  if (!sw.pockets.empty()) {
-    sw.world.set_stop_condition([pockets = sw.pockets](const ContactEvent& contact) {
-      return contact.kind == ContactKind::ball_ball &&
-             (is_pocket(pockets, contact.a) || is_pocket(pockets, contact.b));
-    });
-  }
+  if (!sw.pockets.empty()) stop_at_pocket_contacts(sw.world, sw.pockets);
   return sw;
+}
+
+void stop_at_pocket_contacts(World& world, std::vector<BallId> pockets) {
+  world.set_stop_condition([pockets = std::move(pockets)](const ContactEvent& contact) {
+    return contact.kind == ContactKind::ball_ball &&
+           (is_pocket(pockets, contact.a) || is_pocket(pockets, contact.b));
+  });
 }
 
 double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,

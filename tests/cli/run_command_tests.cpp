@@ -36,13 +36,13 @@ TEST(RunCommand, TwoBallsUntilWithStatsAsJson) {
       run_carom({"run", example("two-moving-balls.json"), "--until", "2", "--stats", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.err, "");
-  const auto json = nlohmann::json::parse(run.out);
-  EXPECT_EQ(json["collisions"], 1);  // they touch once, at t = 0.5, and fly apart
-  EXPECT_EQ(json["end_time"], 2.0);
-  EXPECT_EQ(json["interrupted"], false);
+  const auto stats = nlohmann::json::parse(run.out);
+  EXPECT_EQ(stats["collisions"], 1);  // they touch once, at t = 0.5, and fly apart
+  EXPECT_EQ(stats["end_time"], 2.0);
+  EXPECT_EQ(stats["interrupted"], false);
   // One elastic bounce: energy and momentum are kept to a few roundings.
-  EXPECT_LT(std::abs(json["energy_drift"].get<double>()), 1e-15);
-  EXPECT_LT(json["momentum_drift"].get<double>(), 1e-15);
+  EXPECT_LT(std::abs(stats["energy_drift"].get<double>()), 1e-15);
+  EXPECT_LT(stats["momentum_drift"].get<double>(), 1e-15);
 }
 
 TEST(RunCommand, FramesAsCsvAtTheAskedTimes) {
@@ -149,10 +149,10 @@ TEST(RunCommand, CollisionsCountsExactly) {
   const ToolRun run =
       run_carom({"run", example("box-of-1000.json"), "--collisions", "5000", "--stats", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto json = nlohmann::json::parse(run.out);
-  EXPECT_EQ(json["collisions"], 5000);
+  const auto stats = nlohmann::json::parse(run.out);
+  EXPECT_EQ(stats["collisions"], 5000);
   // Elastic box: energy kept to rounding over 5000 bounces.
-  EXPECT_LT(std::abs(json["energy_drift"].get<double>()), 1e-12);
+  EXPECT_LT(std::abs(stats["energy_drift"].get<double>()), 1e-12);
 }
 
 TEST(RunCommand, TextStatsNameEveryFigure) {
@@ -222,15 +222,15 @@ TEST(RunCommand, InterruptLeavesCompleteFiles) {
 TEST(InfoCommand, CountsEnergyPackingAndSmallestGap) {
   const ToolRun run = run_carom({"info", example("periodic-gas.json"), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto json = nlohmann::json::parse(run.out);
-  EXPECT_EQ(json["balls"], 100000);
-  EXPECT_EQ(json["generated_balls"], 100000);
-  EXPECT_NEAR(json["packing_fraction"].get<double>(), 0.5, 1e-12);
+  const auto stats = nlohmann::json::parse(run.out);
+  EXPECT_EQ(stats["balls"], 100000);
+  EXPECT_EQ(stats["generated_balls"], 100000);
+  EXPECT_NEAR(stats["packing_fraction"].get<double>(), 0.5, 1e-12);
   // Maxwell–Boltzmann at temperature 1 in 2D: E ≈ N·T, within a few standard deviations
   // (relative sd of the sum of 2·10⁵ squared normals is sqrt(2/2e5) = 0.003).
-  EXPECT_NEAR(json["kinetic_energy"].get<double>() / 1e5, 1.0, 5 * 0.003);
-  EXPECT_GT(json["smallest_gap"]["gap"].get<double>(), 0.0);
-  EXPECT_EQ(json["valid"], true);
+  EXPECT_NEAR(stats["kinetic_energy"].get<double>() / 1e5, 1.0, 5 * 0.003);
+  EXPECT_GT(stats["smallest_gap"]["gap"].get<double>(), 0.0);
+  EXPECT_EQ(stats["valid"], true);
 }
 
 TEST(InfoCommand, TextNamesTheClosestPair) {

@@ -81,15 +81,15 @@ TEST(BounceEqualMass, IsTheTutorialExchange) {
 // Tolerances: velocities O(10) and masses O(0.1..10) give momenta O(100) and energies O(1e3);
 // each output is a handful of roundings away, so 1e-12 relative covers it with margin.
 
-constexpr int kCases = 100'000;
+constexpr int kBounceCases = 100'000;
 constexpr double kRelTol = 1e-12;
 
-struct Pair {
+struct BouncePair {
   Vec2 va, vb, normal;
   double ma, mb, e;
 };
 
-Pair random_pair(RandomCases& random) {
+BouncePair random_bounce_pair(RandomCases& random) {
   return {random.point(10.0),
           random.point(10.0),
           random.point(1.0),
@@ -102,8 +102,8 @@ double kinetic(Vec2 v, double m) { return 0.5 * m * length_squared(v); }
 
 TEST(BounceProperty, ConservesMomentum) {
   RandomCases random(21);
-  for (int i = 0; i < kCases; ++i) {
-    const Pair p = random_pair(random);
+  for (int i = 0; i < kBounceCases; ++i) {
+    const BouncePair p = random_bounce_pair(random);
     const BounceResult r = bounce(p.va, p.ma, p.vb, p.mb, p.normal, p.e);
     const Vec2 before = p.va * p.ma + p.vb * p.mb;
     const Vec2 after = r.velocity_a * p.ma + r.velocity_b * p.mb;
@@ -115,8 +115,8 @@ TEST(BounceProperty, ConservesMomentum) {
 
 TEST(BounceProperty, ElasticConservesEnergyAndInelasticLosesThePredictedAmount) {
   RandomCases random(22);
-  for (int i = 0; i < kCases; ++i) {
-    const Pair p = random_pair(random);
+  for (int i = 0; i < kBounceCases; ++i) {
+    const BouncePair p = random_bounce_pair(random);
     const double e = (i % 2 == 0) ? 1.0 : p.e;
     const BounceResult r = bounce(p.va, p.ma, p.vb, p.mb, p.normal, e);
     const double before = kinetic(p.va, p.ma) + kinetic(p.vb, p.mb);
@@ -139,8 +139,8 @@ TEST(BounceProperty, ElasticConservesEnergyAndInelasticLosesThePredictedAmount) 
 
 TEST(BounceProperty, EqualMassImpulseAgreesWithTheExchange) {
   RandomCases random(23);
-  for (int i = 0; i < kCases; ++i) {
-    const Pair p = random_pair(random);
+  for (int i = 0; i < kBounceCases; ++i) {
+    const BouncePair p = random_bounce_pair(random);
     if (dot(p.va - p.vb, p.normal) <= 0.0) continue;  // the exchange applies to approaching pairs
     const BounceResult general = bounce(p.va, p.ma, p.vb, p.ma, p.normal, 1.0);
     const BounceResult exchange = bounce_equal_mass(p.va, p.vb, p.normal);
@@ -155,8 +155,8 @@ TEST(BounceProperty, EqualMassImpulseAgreesWithTheExchange) {
 
 TEST(BounceProperty, StaticBounceMatchesAnImmovablePartner) {
   RandomCases random(24);
-  for (int i = 0; i < kCases; ++i) {
-    const Pair p = random_pair(random);
+  for (int i = 0; i < kBounceCases; ++i) {
+    const BouncePair p = random_bounce_pair(random);
     const WallBounceResult wall = bounce_off_static(p.va, p.ma, p.normal, p.e);
     const BounceResult ball = bounce(p.va, p.ma, {}, kImmovable, p.normal, p.e);
     const double scale = length(p.va);

@@ -32,29 +32,29 @@ TEST(SweepBallBall, TutorialWorkedExample) {
   const Impact impact = sweep_ball_ball(ball1, v1, ball2, v2);
   ASSERT_TRUE(impact.hit);
   EXPECT_FALSE(impact.overlapping);
-  constexpr double kTol = 1e-14;  // a few ulps of the O(10) quantities involved
-  EXPECT_NEAR(impact.t, 1.0 - root3 / 10.0, kTol);
-  EXPECT_NEAR(impact.a_at.x, 8.0 * (1.0 - root3 / 10.0), kTol);
-  EXPECT_NEAR(impact.a_at.y, 0.0, kTol);
-  EXPECT_NEAR(impact.b_at.x, 10.0 - 2.0 * (1.0 - root3 / 10.0), kTol);
-  EXPECT_NEAR(impact.b_at.y, 1.0, kTol);
-  EXPECT_NEAR(impact.normal.x, root3 / 2.0, kTol);
-  EXPECT_NEAR(impact.normal.y, 0.5, kTol);
+  constexpr double kBallBallTol = 1e-14;  // a few ulps of the O(10) quantities involved
+  EXPECT_NEAR(impact.t, 1.0 - root3 / 10.0, kBallBallTol);
+  EXPECT_NEAR(impact.a_at.x, 8.0 * (1.0 - root3 / 10.0), kBallBallTol);
+  EXPECT_NEAR(impact.a_at.y, 0.0, kBallBallTol);
+  EXPECT_NEAR(impact.b_at.x, 10.0 - 2.0 * (1.0 - root3 / 10.0), kBallBallTol);
+  EXPECT_NEAR(impact.b_at.y, 1.0, kBallBallTol);
+  EXPECT_NEAR(impact.normal.x, root3 / 2.0, kBallBallTol);
+  EXPECT_NEAR(impact.normal.y, 0.5, kBallBallTol);
   // Equal radii: the contact point is halfway between the centres.
-  EXPECT_NEAR(impact.point.x, (impact.a_at.x + impact.b_at.x) / 2.0, kTol);
-  EXPECT_NEAR(impact.point.y, 0.5, kTol);
+  EXPECT_NEAR(impact.point.x, (impact.a_at.x + impact.b_at.x) / 2.0, kBallBallTol);
+  EXPECT_NEAR(impact.point.y, 0.5, kBallBallTol);
 
   const BounceResult exchange = bounce_equal_mass(v1, v2, impact.b_at - impact.a_at);
-  EXPECT_NEAR(exchange.velocity_a.x, 0.5, kTol);
-  EXPECT_NEAR(exchange.velocity_a.y, -2.5 * root3, kTol);
-  EXPECT_NEAR(exchange.velocity_b.x, 5.5, kTol);
-  EXPECT_NEAR(exchange.velocity_b.y, 2.5 * root3, kTol);
+  EXPECT_NEAR(exchange.velocity_a.x, 0.5, kBallBallTol);
+  EXPECT_NEAR(exchange.velocity_a.y, -2.5 * root3, kBallBallTol);
+  EXPECT_NEAR(exchange.velocity_b.x, 5.5, kBallBallTol);
+  EXPECT_NEAR(exchange.velocity_b.y, 2.5 * root3, kBallBallTol);
 
   const BounceResult general = bounce(v1, 1.0, v2, 1.0, impact.normal, 1.0);
-  EXPECT_NEAR(general.velocity_a.x, 0.5, kTol);
-  EXPECT_NEAR(general.velocity_a.y, -2.5 * root3, kTol);
-  EXPECT_NEAR(general.velocity_b.x, 5.5, kTol);
-  EXPECT_NEAR(general.velocity_b.y, 2.5 * root3, kTol);
+  EXPECT_NEAR(general.velocity_a.x, 0.5, kBallBallTol);
+  EXPECT_NEAR(general.velocity_a.y, -2.5 * root3, kBallBallTol);
+  EXPECT_NEAR(general.velocity_b.x, 5.5, kBallBallTol);
+  EXPECT_NEAR(general.velocity_b.y, 2.5 * root3, kBallBallTol);
 }
 
 TEST(SweepBallBall, HeadOnExact) {

@@ -15,8 +15,6 @@
 namespace carom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // ---- 10⁶ diameters per step -------------------------------------------------------------------
 
 TEST(SweepEdgeInput, MillionDiametersPerStepBallBall) {
@@ -41,8 +39,8 @@ TEST(SweepEdgeInput, MillionDiametersPerStepWallsAndArcs) {
   ASSERT_TRUE(wall.hit);
   EXPECT_EQ(wall.t, 0.5);  // the centre travels 10⁶ to y = 0, one radius below the wall
   EXPECT_EQ(wall.normal, (Vec2{0.0, 1.0}));
-  const Impact arc =
-      sweep_ball_arc({{0.0, -1e6}, 1.0}, {0.0, 2e6}, {{0.0, 5.0}, 4.0, kPi, 2.0 * kPi});
+  const Impact arc = sweep_ball_arc({{0.0, -1e6}, 1.0}, {0.0, 2e6},
+                                    {{0.0, 5.0}, 4.0, std::numbers::pi, 2.0 * std::numbers::pi});
   ASSERT_TRUE(arc.hit);
   EXPECT_EQ(arc.t, 0.5);  // the arc's lowest point (0, 1) meets the ball's top at y = 0
 }
@@ -70,8 +68,8 @@ TEST(SweepEdgeInput, RadiiFromMicroToMegaInOnePair) {
 TEST(SweepEdgeInput, MicroBallAgainstMegaArcAndWall) {
   // A 10⁻⁶ ball inside a bowl of radius 10⁶, dropped from its centre: it meets the bottom
   // when its centre is 10⁶ − 10⁻⁶ below the bowl's centre.
-  const Impact bowl =
-      sweep_ball_arc({{0.0, 0.0}, 1e-6}, {0.0, -2e6}, {{0.0, 0.0}, 1e6, kPi, 2.0 * kPi});
+  const Impact bowl = sweep_ball_arc({{0.0, 0.0}, 1e-6}, {0.0, -2e6},
+                                     {{0.0, 0.0}, 1e6, std::numbers::pi, 2.0 * std::numbers::pi});
   ASSERT_TRUE(bowl.hit);
   EXPECT_NEAR(bowl.t, (1e6 - 1e-6) / 2e6, 2e-16);
   EXPECT_EQ(bowl.normal, (Vec2{0.0, -1.0}));
@@ -94,8 +92,10 @@ TEST(SweepEdgeInput, ExactlyTouchingAtTheStartEveryShapeAndScale) {
     const Ball other{{2.0 * k, 0.0}, k};
     const Vec2 point{k, 0.0};
     const Segment wall{{k, -k}, {k, k}};
-    const Arc arc{
-        {2.0 * k, 0.0}, k, kPi / 2.0, 3.0 * kPi / 2.0};  // its left half, touching at (k, 0)
+    const Arc arc{{2.0 * k, 0.0},
+                  k,
+                  std::numbers::pi / 2.0,
+                  3.0 * std::numbers::pi / 2.0};  // its left half, touching at (k, 0)
     const std::string scale = "scale 2^" + std::to_string(e);
 
     const Impact pressing[] = {sweep_ball_ball(ball, in, other), sweep_ball_point(ball, in, point),
@@ -171,7 +171,7 @@ TEST(SweepEdgeInput, CentreExactlyOnAPointAndMovingHitsAtZero) {
 // ---- the one refusal of finite input ----------------------------------------------------------
 
 TEST(SweepEdgeInput, ArcReachingBeyondTheDoubleRangeIsRefused) {
-  const Arc beyond{{1e308, 0.0}, 1e308, 0.0, kPi};
+  const Arc beyond{{1e308, 0.0}, 1e308, 0.0, std::numbers::pi};
   try {
     (void)sweep_ball_arc({{0.0, 0.0}, 1.0}, {1.0, 0.0}, beyond);
     FAIL() << "accepted an arc whose circle reaches 2e308";
@@ -181,8 +181,8 @@ TEST(SweepEdgeInput, ArcReachingBeyondTheDoubleRangeIsRefused) {
     EXPECT_NE(std::string(error.what()).find("double range"), std::string::npos) << error.what();
   }
   // Just inside the range it is accepted.
-  EXPECT_NO_THROW(
-      (void)sweep_ball_arc({{0.0, 0.0}, 1.0}, {1.0, 0.0}, {{8e307, 0.0}, 8e307, 0.0, kPi}));
+  EXPECT_NO_THROW((void)sweep_ball_arc({{0.0, 0.0}, 1.0}, {1.0, 0.0},
+                                       {{8e307, 0.0}, 8e307, 0.0, std::numbers::pi}));
 }
 
 }  // namespace

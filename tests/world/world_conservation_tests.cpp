@@ -11,14 +11,12 @@
 #include <string>
 
 #include "carom/world.hpp"
+#include "long_tests.hpp"
 
 namespace carom {
 namespace {
 
-bool long_tests_enabled() {
-  const char* value = std::getenv("CAROM_LONG_TESTS");
-  return value != nullptr && std::string(value) == "1";
-}
+using testing::long_tests_enabled;
 
 // Balls on a jittered grid in the world's [lower, upper] square, per_row × per_row of them.
 // Radii lie in [smallest, largest] and centres within ±jitter of their site (all as fractions of
@@ -100,7 +98,7 @@ TEST(WorldConservation, ElasticPeriodicGasKeepsEnergyAndMomentumLong) {
 // A call that might never return (inelastic collapse) first runs in a child process under an
 // alarm, so that a hang fails the test instead of stalling the suite. The run below takes ~0.1 s
 // in an optimised build; 30 s is generous even under a sanitizer.
-constexpr unsigned kWatchdogSeconds = 30;
+constexpr unsigned kGasWatchdogSeconds = 30;
 
 TEST(WorldConservationDeathTest, InelasticGasWithCollapseGuardKeepsAdvancingAndCools) {
   constexpr double kEndTime = 20.0;
@@ -118,7 +116,7 @@ TEST(WorldConservationDeathTest, InelasticGasWithCollapseGuardKeepsAdvancingAndC
 
   EXPECT_EXIT(
       {
-        alarm(kWatchdogSeconds);
+        alarm(kGasWatchdogSeconds);
         World world = gas(def, dense, 62);
         world.run_until(kEndTime);
         std::_Exit(world.time() == kEndTime ? 0 : 1);

@@ -24,6 +24,7 @@
 
 #include "carom/error.hpp"
 #include "carom/world.hpp"
+#include "long_tests.hpp"
 #include "world/random_scene.hpp"
 #include "world/reference_simulator.hpp"
 #include "world/scene_world.hpp"
@@ -38,14 +39,15 @@ using testing::ReferenceSimulator;
 using testing::SceneWorld;
 using testing::Tolerances;
 
-constexpr double kStep = 1.0 / 60.0;
+constexpr double kReferenceStep = 1.0 / 60.0;
 // The "speeds up to 100 diameters per step".
 constexpr double kDiametersPerStep = 100.0;
 
-// Times agree to 1e-9 relative (the requirement), measured against max(|t|, kStep).
-// One prediction from identical states carries ~1e-15 relative (a handful of roundings, times
-// the conditioning of the contact's quadratic); 1e-9 leaves room for near-grazes. Measured on
-// these scenes: at most 2e-15 contact by contact and step by step, 2e-13 over the whole run.
+// Times agree to 1e-9 relative (the requirement), measured against max(|t|,
+// kReferenceStep). One prediction from identical states carries ~1e-15 relative (a handful of
+// roundings, times the conditioning of the contact's quadratic); 1e-9 leaves room for near-grazes.
+// Measured on these scenes: at most 2e-15 contact by contact and step by step, 2e-13 over the whole
+// run.
 constexpr double kTimeTol = 1e-9;
 // Velocities, approach speeds and normals: the same 1e-9, relative to the scene's top speed
 // (measured: at most 6e-13 step by step, 3e-12 over the whole run).
@@ -57,24 +59,21 @@ constexpr double kPositionTol = 1e-9;
 // scene here has a contact far sooner (its balls cross the box within a few steps).
 constexpr double kNextContactHorizonSteps = 1000.0;
 
-bool long_tests_enabled() {
-  const char* value = std::getenv("CAROM_LONG_TESTS");
-  return value != nullptr && std::string(value) == "1";
-}
+using testing::long_tests_enabled;
 
 GasOptions fast_gas(std::size_t ball_count, double side, bool periodic) {
   GasOptions options;
   options.ball_count = ball_count;
   options.side = side;
   options.periodic = periodic;
-  options.max_speed = kDiametersPerStep * 2.0 * options.max_radius / kStep;
+  options.max_speed = kDiametersPerStep * 2.0 * options.max_radius / kReferenceStep;
   return options;
 }
 
 Tolerances tolerances_for(const GasOptions& options) {
   Tolerances tolerances;
   tolerances.time = kTimeTol;
-  tolerances.time_scale = kStep;
+  tolerances.time_scale = kReferenceStep;
   tolerances.speed = kSpeedTol;
   tolerances.speed_scale = options.max_speed;
   tolerances.position = kPositionTol * options.side;
@@ -88,7 +87,7 @@ void expect_contact_by_contact(SceneWorld& built, const ReferenceScene& scene,
   for (std::size_t k = 0; k < contact_count; ++k) {
     ReferenceSimulator reference(testing::scene_at_world_time(scene, built));
     const std::size_t expected =
-        reference.run_collisions(1, built.world.time() + kNextContactHorizonSteps * kStep);
+        reference.run_collisions(1, built.world.time() + kNextContactHorizonSteps * kReferenceStep);
     ASSERT_EQ(expected, 1u) << "the oracle finds no next contact after " << k;
     ASSERT_EQ(built.world.run_collisions(1), 1u) << "contact " << k;
     ASSERT_TRUE(
@@ -277,18 +276,19 @@ TEST(WorldReference, ChangesBetweenRunsContactByContact) {
     ASSERT_FALSE(built.world.audit().has_value());
     expect_contact_by_contact(built, scene, kContactsPerRound, tolerances_for(options));
     if (HasFatalFailure()) return;
-    built.world.step(0.5 * kStep);  // and a plain step between rounds
+    built.world.step(0.5 * kReferenceStep);  // and a plain step between rounds
   }
 }
 
 // ---- step by step ----------------------------------------------------------------------------
 
-// Steps of a sixteenth of kStep over a sparse gas: one or two contacts per step, so that no
-// chain of contacts inside a step amplifies the two simulators' rounding differences (see the top
-// of the file; with whole steps of kStep, measured differences reach 3e-10 of the time within
-// one step). Many step ends, each with balls in flight at up to 100 diameters per kStep.
+// Steps of a sixteenth of kReferenceStep over a sparse gas: one or two contacts per step, so that
+// no chain of contacts inside a step amplifies the two simulators' rounding differences (see the
+// top of the file; with whole steps of kReferenceStep, measured differences reach 3e-10 of the time
+// within one step). Many step ends, each with balls in flight at up to 100 diameters per
+// kReferenceStep.
 constexpr int kSubsteps = 16;
-constexpr double kSubstep = kStep / kSubsteps;
+constexpr double kSubstep = kReferenceStep / kSubsteps;
 constexpr int kStepsCompared = 20 * kSubsteps;
 
 TEST(WorldReference, BoxGasStepByStep) {
@@ -319,21 +319,21 @@ TEST(WorldReference, WholeRunAcrossCalls) {
   std::vector<ContactEvent> world_contacts;
 
   // Every way of advancing, one after the other.
-  built.world.step(0.5 * kStep);
+  built.world.step(0.5 * kReferenceStep);
   testing::append_contacts(built.world, world_contacts);
-  built.world.run_until(built.world.time() + 0.25 * kStep);
+  built.world.run_until(built.world.time() + 0.25 * kReferenceStep);
   testing::append_contacts(built.world, world_contacts);
   ASSERT_EQ(built.world.run_collisions(5), 5u);
   testing::append_contacts(built.world, world_contacts);
   for (int i = 0; i < 10; ++i) {
-    built.world.step(0.1 * kStep);
+    built.world.step(0.1 * kReferenceStep);
     testing::append_contacts(built.world, world_contacts);
   }
-  built.world.run_until(2.0 * kStep);
+  built.world.run_until(2.0 * kReferenceStep);
   testing::append_contacts(built.world, world_contacts);
 
   ReferenceSimulator reference(scene);
-  reference.run_until(2.0 * kStep);
+  reference.run_until(2.0 * kReferenceStep);
   ASSERT_GT(reference.contacts().size(), 20u);
   EXPECT_TRUE(testing::same_contacts(world_contacts, built.ids, reference.contacts(),
                                      tolerances_for(options)));

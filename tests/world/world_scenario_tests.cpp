@@ -14,7 +14,7 @@
 namespace carom {
 namespace {
 
-constexpr double kStep = 1.0 / 60.0;
+constexpr double kScenarioStep = 1.0 / 60.0;
 // Outcomes that are exact in real arithmetic hold to a few roundings of the speeds involved.
 constexpr double kRoundingTol = 1e-12;
 // "Inside" and "no overlap" allow the audit's default: 1e-9 of the radius (world.hpp).
@@ -105,7 +105,7 @@ TEST(WorldScenario, BilliardsBreakConservesEnergyAndMomentumAndNeverOverlaps) {
   int ball_contacts_before_wall = 0;
   constexpr int kSteps = 600;
   for (int s = 0; s < kSteps; ++s) {
-    world.step(kStep);
+    world.step(kScenarioStep);
     const auto audit = world.audit();
     ASSERT_FALSE(audit.has_value()) << "step " << s << ": " << *audit;
     // Energy: each elastic bounce rounds it by ~1e-16; thousands of them stay far below 1e-12.
@@ -130,7 +130,7 @@ TEST(WorldScenario, StraightOnBreakResolvesItsTiesWithoutOverlap) {
   // Exactly on the axis: the rack's mirror symmetry makes contacts tie in time.
   Table table = billiards_break(60.0, 0.0);
   for (int s = 0; s < 120; ++s) {
-    table.world.step(kStep);
+    table.world.step(kScenarioStep);
     const auto audit = table.world.audit();
     ASSERT_FALSE(audit.has_value()) << "step " << s << ": " << *audit;
     const auto contacts = table.world.contacts();
@@ -207,7 +207,7 @@ TEST(WorldScenario, BallRollingAlongABoxFloorOnlyMeetsTheSides) {
   const BallId ball = world.add_ball(ball_at({5.0, 0.5}, {7.0, 0.0}, 0.5));
   std::uint64_t contacts = 0;
   for (int s = 0; s < 60; ++s) {
-    world.step(kStep * 10.0);
+    world.step(kScenarioStep * 10.0);
     for (const ContactEvent& c : world.contacts()) {
       ++contacts;
       EXPECT_TRUE(c.wall == 1u || c.wall == 3u) << "met wall " << c.wall;  // the sides only
@@ -248,13 +248,13 @@ TEST(WorldScenario, TouchingPairSeparatingNeverCollides) {
 // ---- fast balls ------------------------------------------------------------------------------
 
 // 1000 diameters per step: each crosses the other's whole width in a thousandth of a step.
-constexpr double kFastSpeed = 1000.0 * 1.0 / kStep;
+constexpr double kFastSpeed = 1000.0 * 1.0 / kScenarioStep;
 
 TEST(WorldScenario, FastHeadOnBallsBounceInsteadOfTunnelling) {
   World world;
   const BallId a = world.add_ball(ball_at({-5.0, 0.0}, {kFastSpeed, 0.0}));
   const BallId b = world.add_ball(ball_at({5.0, 0.0}, {-kFastSpeed, 0.0}));
-  world.step(kStep);
+  world.step(kScenarioStep);
   ASSERT_EQ(world.contacts().size(), 1u);
   EXPECT_NEAR(world.contacts()[0].time, 4.5 / kFastSpeed, kRoundingTol);
   EXPECT_LT(world.position(a).x, world.position(b).x);  // still on their own sides
@@ -266,7 +266,7 @@ TEST(WorldScenario, FastBallBouncesOffAThinWall) {
   World world;
   world.add_segment({{0.0, -1.0}, {0.0, 1.0}});
   const BallId ball = world.add_ball(ball_at({-3.0, 0.2}, {kFastSpeed, 0.0}));
-  world.step(kStep);
+  world.step(kScenarioStep);
   ASSERT_EQ(world.contacts().size(), 1u);
   EXPECT_LT(world.position(ball).x, 0.0);
   expect_near(world.velocity(ball), {-kFastSpeed, 0.0}, kRoundingTol * kFastSpeed, "bounced");
@@ -299,7 +299,7 @@ TEST(WorldScenario, BallsInsideAFullArcBowlStayInside) {
   // A square of balls well inside the circle (its half-diagonal 5·√2 < 10 − radius).
   const auto ids = scatter_balls(world, {0.0, 0.0}, 5.0, 5, kRadius, 200.0, 31);
   for (int s = 0; s < 600; ++s) {
-    world.step(kStep);
+    world.step(kScenarioStep);
     for (BallId id : ids) {
       ASSERT_LE(length(world.position(id)), kBowl - kRadius * (1.0 - kOverlapTol)) << "step " << s;
     }
@@ -315,7 +315,7 @@ TEST(WorldScenario, BallsInsideAHalfBowlClosedByASegmentStayInside) {
   world.add_segment({{-kBowl, 0.0}, {kBowl, 0.0}});           // its lid, sharing its ends
   const auto ids = scatter_balls(world, {0.0, 4.0}, 3.5, 4, kRadius, 200.0, 32);
   for (int s = 0; s < 600; ++s) {
-    world.step(kStep);
+    world.step(kScenarioStep);
     for (BallId id : ids) {
       const Vec2 p = world.position(id);
       ASSERT_LE(length(p), kBowl - kRadius * (1.0 - kOverlapTol)) << "step " << s;
@@ -349,7 +349,7 @@ TEST(WorldScenario, BallsInsideARotatedSquareStayInside) {
   }
   const double limit = kHalf - kRadius * (1.0 - kOverlapTol);
   for (int s = 0; s < 600; ++s) {
-    world.step(kStep);
+    world.step(kScenarioStep);
     for (BallId id : ids) {
       const Vec2 p = world.position(id);
       ASSERT_LE(std::abs(dot(p, u)), limit) << "step " << s;
@@ -386,7 +386,7 @@ TEST(WorldScenario, NoBallEverLeavesAClosedBox) {
       const double radius = 0.3 + 0.4 * unit(engine);
       const double a = 2.0 * std::numbers::pi * unit(engine);
       // Up to 100 diameters per step.
-      const double speed = unit(engine) * 100.0 * 2.0 * radius / kStep;
+      const double speed = unit(engine) * 100.0 * 2.0 * radius / kScenarioStep;
       BallDef def = ball_at({(i + 0.5) * kSide / 15.0, (j + 0.5) * kSide / 15.0},
                             Vec2{std::cos(a), std::sin(a)} * speed, radius);
       def.mass = 0.5 + unit(engine);
@@ -394,7 +394,7 @@ TEST(WorldScenario, NoBallEverLeavesAClosedBox) {
     }
   }
   for (int s = 0; s < 60; ++s) {
-    world.step(kStep);
+    world.step(kScenarioStep);
     for (BallId id : ids) {
       const Vec2 p = world.position(id);
       const double reach = world.radius(id) * (1.0 - kOverlapTol);

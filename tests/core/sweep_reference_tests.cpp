@@ -16,7 +16,7 @@ namespace {
 using testing::GapFunction;
 using testing::RandomCases;
 
-constexpr int kCases = 20'000;
+constexpr int kReferenceCases = 20'000;
 constexpr int kSamples = 2'000;
 constexpr double kBisectionTol = 1e-13;
 // A "clear" reference hit goes at least this deep at a sample: a brief graze between two
@@ -33,13 +33,14 @@ struct Case {
   GapFunction gap;
 };
 
-// Compares the library with the reference on kCases random cases from `make` (cases that start
-// in contact are left to the edge tests), and checks that at least min_compared were clear hits.
+// Compares the library with the reference on kReferenceCases random cases from `make` (cases that
+// start in contact are left to the edge tests), and checks that at least min_compared were clear
+// hits.
 void compare_random_cases(std::uint64_t seed, int min_compared,
                           const std::function<Case(RandomCases&)>& make) {
   RandomCases random(seed);
   int compared = 0;
-  for (int i = 0; i < kCases; ++i) {
+  for (int i = 0; i < kReferenceCases; ++i) {
     const Case c = make(random);
     if (c.gap(0.0) <= 0.0) continue;
     const auto reference = testing::first_contact(c.gap, 1.0, kSamples, kBisectionTol);
@@ -56,7 +57,7 @@ void compare_random_cases(std::uint64_t seed, int min_compared,
 }
 
 TEST(SweepReference, BallBall) {
-  compare_random_cases(11, kCases / 8, [](RandomCases& random) {
+  compare_random_cases(11, kReferenceCases / 8, [](RandomCases& random) {
     const Ball a = random.ball(10.0);
     const Ball b = random.ball(10.0);
     const Vec2 move_a = random.move_towards(a.center, b.center, 4.0);
@@ -69,7 +70,7 @@ TEST(SweepReference, BallBall) {
 }
 
 TEST(SweepReference, BallSegment) {
-  compare_random_cases(12, kCases / 20, [](RandomCases& random) {
+  compare_random_cases(12, kReferenceCases / 20, [](RandomCases& random) {
     const Segment segment = random.segment(8.0);
     const Ball ball = random.ball(10.0);
     const Vec2 move = random.move_towards(ball.center, random.point(6.0), 4.0);
@@ -81,7 +82,7 @@ TEST(SweepReference, BallSegment) {
 }
 
 TEST(SweepReference, BallArc) {
-  compare_random_cases(13, kCases / 20, [](RandomCases& random) {
+  compare_random_cases(13, kReferenceCases / 20, [](RandomCases& random) {
     const Arc arc = random.arc(6.0);
     const Ball ball = random.ball(10.0);
     const Vec2 move = random.move_towards(ball.center, random.point(6.0), 4.0);
@@ -93,7 +94,7 @@ TEST(SweepReference, BallArc) {
 
 TEST(SweepReference, BallInsideArcBowls) {
   // Balls starting inside the arc's circle exercise the inner face and the gap.
-  compare_random_cases(14, kCases / 20, [](RandomCases& random) {
+  compare_random_cases(14, kReferenceCases / 20, [](RandomCases& random) {
     Arc arc = random.arc(2.0);
     arc.radius = random.uniform(3.0, 8.0);
     const double ball_radius = random.uniform(0.1, 0.9) * arc.radius;

@@ -18,16 +18,12 @@
 #include "carom/bounce.hpp"
 #include "carom/error.hpp"
 #include "carom/world.hpp"
+#include "long_tests.hpp"
 
 namespace carom {
 namespace {
 
-bool long_tests_enabled() {
-  const char* value = std::getenv("CAROM_LONG_TESTS");
-  return value != nullptr && std::string(value) == "1";
-}
-
-BallDef ball_at(Vec2 position, Vec2 velocity, double radius = 0.5, double mass = 1.0) {
+BallDef extreme_ball(Vec2 position, Vec2 velocity, double radius = 0.5, double mass = 1.0) {
   BallDef def;
   def.position = position;
   def.velocity = velocity;
@@ -36,7 +32,7 @@ BallDef ball_at(Vec2 position, Vec2 velocity, double radius = 0.5, double mass =
   return def;
 }
 
-double momentum_scale(const World& world) {
+double extreme_momentum_scale(const World& world) {
   double sum = 0.0;
   for (const BallId id : world.balls()) sum += world.mass(id) * length(world.velocity(id));
   return sum;
@@ -54,7 +50,7 @@ TEST(WorldExtreme, MillionDiametersPerStepBetweenTwoWalls) {
   def.lower = {0.0, 0.0};
   def.upper = {10.0, 10.0};
   World world(def);
-  const BallId ball = world.add_ball(ball_at({5.0, 5.0}, {kMillionDiametersPerStep, 0.0}));
+  const BallId ball = world.add_ball(extreme_ball({5.0, 5.0}, {kMillionDiametersPerStep, 0.0}));
   world.step(1.0);
   // The centre moves in [0.5, 9.5]; unfolded it travels 4.5 + 10⁶ from the left end, and the
   // path folds with period 18: 10⁶ = 55 555·18 + 10, so it is 14.5 along a fold, on the way
@@ -72,8 +68,8 @@ TEST(WorldExtreme, MillionDiametersPerStepBetweenTwoWalls) {
 
 TEST(WorldExtreme, MillionDiametersPerStepHeadOn) {
   World world;
-  const BallId a = world.add_ball(ball_at({-5.0, 0.0}, {kMillionDiametersPerStep, 0.0}));
-  const BallId b = world.add_ball(ball_at({5.0, 0.0}, {-kMillionDiametersPerStep, 0.0}));
+  const BallId a = world.add_ball(extreme_ball({-5.0, 0.0}, {kMillionDiametersPerStep, 0.0}));
+  const BallId b = world.add_ball(extreme_ball({5.0, 0.0}, {-kMillionDiametersPerStep, 0.0}));
   world.step(1.0);
   ASSERT_EQ(world.contacts().size(), 1u);
   // They meet when the 9-unit gap closes at 2·10⁶: t = 4.5e-6, to rounding.
@@ -90,23 +86,23 @@ TEST(WorldExtreme, RadiiFromAMillionthToAMillionInOneWorld) {
   // at it from four sides, and two balls of radius 10⁻⁶ meet head-on beside it. The grid's cells
   // follow the largest diameter, so every small ball shares one cell: slow, but exact.
   World world;
-  world.add_ball(ball_at({0.0, 0.0}, {}, 1e6, kImmovable));
+  world.add_ball(extreme_ball({0.0, 0.0}, {}, 1e6, kImmovable));
   const double big = 1e6;
   struct Shot {
     BallDef def;
     double contact_time;
   };
   const Shot shots[] = {
-      {ball_at({big + 10.0, 0.0}, {-1.0, 0.0}, 1e-6), 10.0 - 1e-6},
-      {ball_at({0.0, big + 20.0}, {0.0, -2.0}, 1e-3), (20.0 - 1e-3) / 2.0},
-      {ball_at({-(big + 30.0), 0.0}, {3.0, 0.0}, 1.0), (30.0 - 1.0) / 3.0},
-      {ball_at({0.0, -(big + 1e3 + 40.0)}, {0.0, 4.0}, 1e3), 40.0 / 4.0},
+      {extreme_ball({big + 10.0, 0.0}, {-1.0, 0.0}, 1e-6), 10.0 - 1e-6},
+      {extreme_ball({0.0, big + 20.0}, {0.0, -2.0}, 1e-3), (20.0 - 1e-3) / 2.0},
+      {extreme_ball({-(big + 30.0), 0.0}, {3.0, 0.0}, 1.0), (30.0 - 1.0) / 3.0},
+      {extreme_ball({0.0, -(big + 1e3 + 40.0)}, {0.0, 4.0}, 1e3), 40.0 / 4.0},
   };
   std::vector<BallId> ids;
   for (const Shot& shot : shots) ids.push_back(world.add_ball(shot.def));
   // Head-on beside the big ball: 10 units apart, closing at 2: they touch at 5 − 10⁻⁶.
-  const BallId up = world.add_ball(ball_at({big + 100.0, -5.0}, {0.0, 1.0}, 1e-6));
-  const BallId down = world.add_ball(ball_at({big + 100.0, 5.0}, {0.0, -1.0}, 1e-6));
+  const BallId up = world.add_ball(extreme_ball({big + 100.0, -5.0}, {0.0, 1.0}, 1e-6));
+  const BallId down = world.add_ball(extreme_ball({big + 100.0, 5.0}, {0.0, -1.0}, 1e-6));
   const double energy = world.kinetic_energy();
   world.run_until(20.0);
   // Positions near 10⁶ are doubles 1.2e-10 apart, so contact times hold to about that over unit
@@ -161,7 +157,7 @@ World touching_square_packing(int side, std::uint64_t seed) {
   for (int i = 0; i < side; ++i) {
     for (int j = 0; j < side; ++j) {
       const Vec2 velocity{component(engine), component(engine)};
-      world.add_ball(ball_at({i + i / 10 + 0.5, j + j / 10 + 0.5}, velocity));
+      world.add_ball(extreme_ball({i + i / 10 + 0.5, j + j / 10 + 0.5}, velocity));
     }
   }
   return world;
@@ -174,7 +170,7 @@ void run_touching_packing(int side, std::uint64_t collisions) {
   world.set_contact_recording(false);
   const double energy = world.kinetic_energy();
   const Vec2 momentum = world.momentum();
-  const double scale = momentum_scale(world);
+  const double scale = extreme_momentum_scale(world);
   world.set_contact_recording(true);
   // The first contact is at time 0: some neighbours approach each other from the start.
   ASSERT_EQ(world.run_collisions(1), 1u);
@@ -195,7 +191,7 @@ TEST(WorldExtreme, TenThousandTouchingDisksCollideAndStayApart) {
 }
 
 TEST(WorldExtreme, MillionTouchingDisksCollideAndStayApartLong) {
-  if (!long_tests_enabled()) GTEST_SKIP() << "set CAROM_LONG_TESTS=1";
+  if (!testing::long_tests_enabled()) GTEST_SKIP() << "set CAROM_LONG_TESTS=1";
   run_touching_packing(1000, 20000000);
 }
 
@@ -211,7 +207,7 @@ TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
   def.upper = {4.0, 4.0};
   World world(def);
   for (int i = 0; i < 4; ++i) {
-    world.add_ball(ball_at({i + 0.5, 2.0}, {i == 0 ? 1.0 : 0.0, 0.0}));
+    world.add_ball(extreme_ball({i + 0.5, 2.0}, {i == 0 ? 1.0 : 0.0, 0.0}));
   }
   try {
     world.step(1.0);
@@ -234,7 +230,8 @@ TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
 TEST(WorldExtreme, DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside) {
   World world;
   world.add_arc({{20.0, 20.0}, 8.5, std::numbers::pi, 3.0 * std::numbers::pi});
-  world.add_ball(ball_at({20.0, 12.0}, {7.0, 0.0}));  // touching the circle exactly, at its bottom
+  world.add_ball(
+      extreme_ball({20.0, 12.0}, {7.0, 0.0}));  // touching the circle exactly, at its bottom
   world.step(0.0121);
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
@@ -244,7 +241,7 @@ TEST(WorldExtreme, DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside) {
 // A ball of radius 0.5 at (-3, 0.3) moving at (1, 0) meets a point at the origin when it is 0.4
 // left of it: t = 2.6, normal (0.8, -0.6), and leaves at v − 2(v·n)n = (−0.28, 0.96).
 void expect_point_bounce(World& world) {
-  const BallId ball = world.add_ball(ball_at({-3.0, 0.3}, {1.0, 0.0}));
+  const BallId ball = world.add_ball(extreme_ball({-3.0, 0.3}, {1.0, 0.0}));
   world.step(4.0);
   ASSERT_EQ(world.contacts().size(), 1u);
   const ContactEvent& contact = world.contacts()[0];
@@ -274,8 +271,8 @@ TEST(WorldExtreme, ZeroSpanArcIsAPoint) {
 TEST(WorldExtreme, BallPlacedOnAPointWallIsRefused) {
   World world;
   world.add_segment({{0.0, 0.0}, {0.0, 0.0}});
-  EXPECT_THROW(world.add_ball(ball_at({0.2, 0.0}, {})), InvalidArgument);
-  EXPECT_NO_THROW(world.add_ball(ball_at({0.5, 0.0}, {})));  // touching exactly is allowed
+  EXPECT_THROW(world.add_ball(extreme_ball({0.2, 0.0}, {})), InvalidArgument);
+  EXPECT_NO_THROW(world.add_ball(extreme_ball({0.5, 0.0}, {})));  // touching exactly is allowed
 }
 
 TEST(WorldExtreme, ArcAngleBeyondTwoToTheFortyIsRefused) {
@@ -290,7 +287,7 @@ TEST(WorldExtreme, ArcAngleBeyondTwoToTheFortyIsRefused) {
   EXPECT_EQ(world.wall_count(), 0u);
   // At the bound a full circle is still a full circle: a ball inside it stays inside.
   world.add_arc({{0.0, 0.0}, 5.0, -kLargestArcAngle, -kLargestArcAngle + 2.0 * std::numbers::pi});
-  world.add_ball(ball_at({0.0, 0.0}, {3.0, 1.0}));
+  world.add_ball(extreme_ball({0.0, 0.0}, {3.0, 1.0}));
   world.step(10.0);
   EXPECT_GT(world.contacts().size(), 3u);
   EXPECT_FALSE(world.audit().has_value());
@@ -307,8 +304,8 @@ TEST(WorldFuzzFound, EmptyOpenWorldSavesAndLoads) {
   world.save(bytes);
   World loaded = World::load(bytes);
   EXPECT_EQ(loaded.time(), world.time());
-  const BallId a = loaded.add_ball(ball_at({0.0, 0.0}, {1.0, 0.0}));
-  const BallId b = world.add_ball(ball_at({0.0, 0.0}, {1.0, 0.0}));
+  const BallId a = loaded.add_ball(extreme_ball({0.0, 0.0}, {1.0, 0.0}));
+  const BallId b = world.add_ball(extreme_ball({0.0, 0.0}, {1.0, 0.0}));
   loaded.step(1.0);
   world.step(1.0);
   EXPECT_EQ(loaded.position(a), world.position(b));
@@ -325,8 +322,8 @@ TEST(WorldFuzzFound, TinySlowBallBetweenBoxWallsPassesTheAudit) {
   def.upper = {20.0, 20.0};
   World world(def);
   const BallId ball =
-      world.add_ball(ball_at({8.8432135500114448, 8.8523689631494626},
-                             {-9.9990667325760514e-10, -1.3661799841489198e-11}, 1e-6, 3.0));
+      world.add_ball(extreme_ball({8.8432135500114448, 8.8523689631494626},
+                                  {-9.9990667325760514e-10, -1.3661799841489198e-11}, 1e-6, 3.0));
   for (int contact = 0; contact < 7; ++contact) {
     ASSERT_EQ(world.run_collisions(1), 1u);
     EXPECT_FALSE(world.audit().has_value()) << *world.audit();
@@ -346,8 +343,8 @@ TEST(WorldFuzzFound, PeriodicDragStopsAtTheImageOfABall) {
   def.lower = {0.0, 0.0};
   def.upper = {20.0, 20.0};
   World world(def);
-  const BallId still = world.add_ball(ball_at({20.0, 20.0}, {}, 0.1, 3.0));  // wraps to (0, 0)
-  const BallId dragged = world.add_ball(ball_at({16.797436484321359, 40.0}, {}, 0.1, 3.0));
+  const BallId still = world.add_ball(extreme_ball({20.0, 20.0}, {}, 0.1, 3.0));  // wraps to (0, 0)
+  const BallId dragged = world.add_ball(extreme_ball({16.797436484321359, 40.0}, {}, 0.1, 3.0));
   const Vec2 placed = world.set_position(dragged, {20.0, 20.0}, Placement::nearest_free);
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
   // The shortest way from (16.8, 0) to (0, 0) ≡ (20, 0) runs along +x; it stops touching.
@@ -361,8 +358,8 @@ TEST(WorldFuzzFound, PeriodicDragStopsAtTheImageOfABall) {
 // reported their overlap as a violation.
 TEST(WorldFuzzFound, ImmovableBallsPassingThroughEachOtherPassTheAudit) {
   World world;
-  world.add_ball(ball_at({-2.0, 0.0}, {1.0, 0.0}, 0.5, kImmovable));
-  world.add_ball(ball_at({2.0, 0.0}, {-1.0, 0.0}, 0.5, kImmovable));
+  world.add_ball(extreme_ball({-2.0, 0.0}, {1.0, 0.0}, 0.5, kImmovable));
+  world.add_ball(extreme_ball({2.0, 0.0}, {-1.0, 0.0}, 0.5, kImmovable));
   world.step(2.0);  // centres coincide at t = 2
   EXPECT_TRUE(world.contacts().empty());
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
@@ -374,9 +371,9 @@ TEST(WorldFuzzFound, ImmovableBallsPassingThroughEachOtherPassTheAudit) {
 // accepts a pair whose relative line clears the two radii. The alarm ends a hang as a failure.
 TEST(WorldFuzzFound, ApproachingPairThatMissesEndsRunCollisions) {
   World world;
-  world.add_ball(ball_at({27.058823529411761, -5.9885557335774777}, {0.5, 0.0}));
+  world.add_ball(extreme_ball({27.058823529411761, -5.9885557335774777}, {0.5, 0.0}));
   world.add_ball(
-      ball_at({13.101396200503551, 29.582970931563281}, {0.5, -1.2246467991473532e-16}, 0.1));
+      extreme_ball({13.101396200503551, 29.582970931563281}, {0.5, -1.2246467991473532e-16}, 0.1));
   alarm(60);
   EXPECT_EQ(world.run_collisions(6), 0u);
   alarm(0);
@@ -392,10 +389,10 @@ TEST(WorldFuzzFound, LargeBallsInAPeriodicCellMeet) {
   def.lower = {0.0, 0.0};
   def.upper = {20.0, 20.0};
   World world(def);
-  world.add_ball(ball_at({-19.8974593728542, -10.858319981689172},
-                         {10.886588208720136, 99.405644694724231}, 3.0, 0.001));
-  world.add_ball(ball_at({10.95170519569696, 37.012588693064771},
-                         {0.47830220975022036, -0.14569487344466245}, 2.0, 0.001));
+  world.add_ball(extreme_ball({-19.8974593728542, -10.858319981689172},
+                              {10.886588208720136, 99.405644694724231}, 3.0, 0.001));
+  world.add_ball(extreme_ball({10.95170519569696, 37.012588693064771},
+                              {0.47830220975022036, -0.14569487344466245}, 2.0, 0.001));
   for (int k = 1; k <= 100; ++k) {
     world.run_until(k * 0.01);
     ASSERT_FALSE(world.audit().has_value()) << "at t = " << world.time() << ": " << *world.audit();
@@ -414,10 +411,10 @@ TEST(WorldFuzzFound, ImmovableBallInAPeriodicCellMeetsEveryBall) {
   def.restitution = 0.5;
   def.collapse_time = 1e-3;
   World world(def);
-  world.add_ball(ball_at({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0, kImmovable));
-  world.add_ball(ball_at({12.866102082856489, 8.8926527809567411}, {}, 3.0, 3.0));
-  world.add_ball(ball_at({4.6088349736781868, 9.9821469443808652},
-                         {-6.9994687708038139, 0.086237616746669701}, 0.1, 3.0));
+  world.add_ball(extreme_ball({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0, kImmovable));
+  world.add_ball(extreme_ball({12.866102082856489, 8.8926527809567411}, {}, 3.0, 3.0));
+  world.add_ball(extreme_ball({4.6088349736781868, 9.9821469443808652},
+                              {-6.9994687708038139, 0.086237616746669701}, 0.1, 3.0));
   for (const double limit :
        {20.0, 21.269235050812124, 23.359326771049489, 25.96484328942498, 27.803385482371851}) {
     world.run_collisions(1, limit);
@@ -452,7 +449,7 @@ TEST(WorldFuzzFound, BallDraggedAgainstTheInsideOfAnArcBouncesBack) {
       world.add_arc({center, 5.9999618524452583, -2.5132261852407431, 3.7699591219388431});
   world.add_arc({{4.0, 16.0}, 2.000022888532845, -1.256684999067009, -1.256684999067009});
   const BallId ball =
-      world.add_ball(ball_at({13.999847409781033, 10.000152590218967}, {3.0, 0.0}, 0.5, 1.0));
+      world.add_ball(extreme_ball({13.999847409781033, 10.000152590218967}, {3.0, 0.0}, 0.5, 1.0));
   world.set_position(ball, {10.000152590218967, 2.000152590218967}, Placement::nearest_free);
   world.set_contact_recording(true);
   world.run_until(0.10000000000000001);

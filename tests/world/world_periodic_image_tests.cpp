@@ -11,7 +11,7 @@
 namespace carom {
 namespace {
 
-BallDef disk(Vec2 position, Vec2 velocity, double radius) {
+BallDef periodic_disk(Vec2 position, Vec2 velocity, double radius) {
   BallDef def;
   def.position = position;
   def.velocity = velocity;
@@ -30,8 +30,8 @@ TEST(WorldPeriodicImages, APairMeetsThroughAnImageThatWasNotTheNearest) {
   def.lower = {0.0, 0.0};
   def.upper = {20.0, 20.0};
   World world(def);
-  const BallId a = world.add_ball(disk({2.0, 10.0}, {0.0, 0.0}, 2.5));
-  const BallId b = world.add_ball(disk({12.5, 10.0}, {-1.0, 0.0}, 2.5));
+  const BallId a = world.add_ball(periodic_disk({2.0, 10.0}, {0.0, 0.0}, 2.5));
+  const BallId b = world.add_ball(periodic_disk({12.5, 10.0}, {-1.0, 0.0}, 2.5));
   world.run_until(6.5);
   ASSERT_EQ(world.contacts().size(), 1U);
   // t = 5.5 in exact arithmetic; the computed time is a few roundings of the times involved.
@@ -45,7 +45,7 @@ TEST(WorldPeriodicImages, APairMeetsThroughAnImageThatWasNotTheNearest) {
 // A call as the fuzzer makes it: a documented refusal (carom::InvalidArgument: a ball placed on
 // another, a time limit already past) is an answer, not a failure.
 template <typename Call>
-void refusal_allowed(Call call) {
+void periodic_refusal_allowed(Call call) {
   try {
     call();
   } catch (const InvalidArgument&) {
@@ -62,33 +62,33 @@ TEST(WorldPeriodicImages, TheFuzzersSequenceStaysApart) {
   def.restitution = 0.5;
   def.collapse_time = 1e-3;
   World world(def);
-  BallDef post = disk({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0);
+  BallDef post = periodic_disk({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0);
   post.mass = kImmovable;
   world.add_ball(post);
-  BallDef big = disk({12.866102082856489, 8.8926527809567411}, {-0.0, -0.0}, 2.5);
+  BallDef big = periodic_disk({12.866102082856489, 8.8926527809567411}, {-0.0, -0.0}, 2.5);
   big.mass = 3.0;
   world.add_ball(big);
-  BallDef third = disk({4.6088349736781868, 12.872816052491036},
-                       {9.9994131382928977, 0.10833692692419786}, 2.0);
+  BallDef third = periodic_disk({4.6088349736781868, 12.872816052491036},
+                                {9.9994131382928977, 0.10833692692419786}, 2.0);
   third.mass = 3.0;
   world.add_ball(third);
   for (const double limit :
        {20.0, 20.629270080143208, 22.154630904863119, 23.624273508865151, 28.478526061531795,
         33.392672641325895, 35.080140636847609, 40.708097579574748}) {
-    refusal_allowed([&] { world.run_collisions(1, limit); });
+    periodic_refusal_allowed([&] { world.run_collisions(1, limit); });
     ASSERT_FALSE(world.audit().has_value()) << *world.audit();
   }
   BallDef small =
-      disk({-20.0, -19.062485694666972}, {-6.9994687708038139, 0.086237616746669701}, 0.1);
+      periodic_disk({-20.0, -19.062485694666972}, {-6.9994687708038139, 0.086237616746669701}, 0.1);
   small.mass = 3.0;
-  refusal_allowed([&] { world.add_ball(small); });
-  refusal_allowed([&] { world.run_collisions(6, 41.816219257355044); });
+  periodic_refusal_allowed([&] { world.add_ball(small); });
+  periodic_refusal_allowed([&] { world.run_collisions(6, 41.816219257355044); });
   ASSERT_FALSE(world.audit().has_value()) << *world.audit();
-  BallDef last = disk({6.8357366292820636, 9.9607843137254903},
-                      {-6.9994687708038139, 0.086237616746669701}, 0.1);
+  BallDef last = periodic_disk({6.8357366292820636, 9.9607843137254903},
+                               {-6.9994687708038139, 0.086237616746669701}, 0.1);
   last.mass = 3.0;
-  refusal_allowed([&] { world.add_ball(last); });
-  refusal_allowed([&] { world.run_collisions(1, 61.816219257355044); });
+  periodic_refusal_allowed([&] { world.add_ball(last); });
+  periodic_refusal_allowed([&] { world.run_collisions(1, 61.816219257355044); });
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
 

@@ -2,7 +2,7 @@
 #   make run    install what is missing, build, run the billiards break (examples/), summarise it
 #   make test   install what is missing, then everything CI checks
 # More: make bench (core benchmarks, optimised build), make fuzz (the fuzz targets, 10 minutes
-# each), make format, make lint, make clean.
+# each), make format, make lint (make lint-deep with the static analyzer), make clean.
 # Browser playground: make playground (serve it), make test-web, make bench-web.
 
 SHELL := /bin/bash
@@ -194,13 +194,21 @@ bench: deps
 format:
 	git ls-files -- '*.hpp' '*.cpp' | xargs clang-format -i
 
+# make lint (in make test): .clang-tidy's checks without the clang static analyzer, which costs
+# about two thirds of clang-tidy's time (docs/design.md, "CI time"); make lint-deep adds it.
+LINT_CHECKS ?= -clang-analyzer-*
 lint: deps
 	cmake --preset dev >/dev/null
 	# clang-tidy counts the warnings it suppressed in system headers on stderr; only findings matter.
 	# One file per clang-tidy: its cost per file varies tenfold (the CLI11 commands are the dearest),
 	# so handing out single files keeps both cores busy to the end.
 	git ls-files -- 'src/*.cpp' 'apps/*.cpp' \
-	  | xargs -P 2 -n 1 clang-tidy -p build/dev --quiet 2> >(grep -v 'warnings generated' >&2)
+	  | xargs -P 2 -n 1 clang-tidy -p build/dev --quiet --checks='$(LINT_CHECKS)' \
+	    2> >(grep -v 'warnings generated' >&2)
+
+.PHONY: lint-deep
+lint-deep:
+	$(MAKE) lint LINT_CHECKS=
 
 # ---- the browser playground (web/) ----
 # Debian's emscripten needs NODE_PATH to find acorn for its optimiser, and a writable cache: the

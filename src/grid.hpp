@@ -22,6 +22,11 @@ class Grid {
              std::uint32_t ball_capacity);
   // Makes room for balls up to index capacity − 1 (new ones in no cell).
   void reserve_balls(std::uint32_t capacity);
+  // Allocates for `count` balls without adding any (World::reserve).
+  void reserve_capacity(std::uint32_t count) {
+    next_.reserve(count);
+    ball_cell_.reserve(count);
+  }
 
   [[nodiscard]] std::int32_t nx() const { return nx_; }
   [[nodiscard]] std::int32_t ny() const { return ny_; }

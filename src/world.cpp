@@ -202,6 +202,20 @@ void World::remove_ball(BallId id) {
   w.events_valid = false;
 }
 
+void World::reserve(std::size_t count) {
+  if (count > detail::EventQueue::kMaxBalls) {
+    refuse("World::reserve", "count", std::to_string(count),
+           "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
+  }
+  Impl& w = *impl_;
+  w.balls.reserve(count);
+  w.infos.reserve(count);
+  w.handle_of.reserve(count);
+  w.slot_of_handle.reserve(count);
+  if (w.def.collapse_time > 0.0) w.last_contact_times.reserve(count);
+  w.grid.reserve_capacity(static_cast<std::uint32_t>(count));
+}
+
 bool World::contains(BallId id) const noexcept {
   const Impl& w = *impl_;
   if (id.is_null() || id.index >= w.slot_of_handle.size()) return false;

@@ -85,6 +85,7 @@ World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed) {
   def.lower = {0.0, 0.0};
   def.upper = {layout.side, layout.side};
   World world(def);
+  world.reserve(layout.n);
   std::mt19937_64 random(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (std::uint64_t i = 0; i < layout.n; ++i) {
@@ -111,6 +112,7 @@ World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed,
   def.upper = {layout.side, layout.side};
   World world(def);
   const std::vector<BallId> ids = sized.balls();
+  world.reserve(ids.size());
   // kT = K/N = 1 exactly (for mass 1): the drawn velocities' K/N is 1 only on average.
   const double scale = std::sqrt(static_cast<double>(ids.size()) / sized.kinetic_energy());
   for (std::size_t i = 0; i < ids.size(); ++i) {

@@ -109,8 +109,13 @@ class World {
   // Throws if the ball overlaps another ball or a wall, or lies outside a box.
   BallId add_ball(const BallDef& def);
   void remove_ball(BallId id);
+  // Makes room for `count` balls in all (live ones and removed ones' reusable handles), so that
+  // adding up to that many allocates nothing more: like std::vector::reserve, it spares the
+  // copies of the per-ball arrays while they grow, and the peak of memory those copies make.
+  // Throws InvalidArgument past the most a world holds (2^30).
+  void reserve(std::size_t count);
   [[nodiscard]] bool contains(BallId id) const noexcept;
-  // Every live ball, in slot order.
+  // Every live ball, in handle order (BallId::index ascending).
   [[nodiscard]] std::vector<BallId> balls() const;
 
   // ---- static geometry ----

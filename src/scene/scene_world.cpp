@@ -96,6 +96,7 @@ SceneWorld make_world(const Scene& scene) {
     throw world_refused("segments", error);
   }
   sw.balls.reserve(balls.size());
+  sw.world.reserve(balls.size() + scene.pockets.size());
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const SceneBall& b = balls[i];
     try {

@@ -525,6 +525,28 @@ World box_of_balls(std::uint64_t seed, int per_row, double speed) {
   return world;
 }
 
+// World::reserve only allocates: the same balls added after it run bit for bit as without it,
+// and a count past the most a world holds is refused.
+TEST(WorldApi, ReserveChangesNothingButAllocation) {
+  World plain = box_of_balls(61, 8, 10.0);
+  World reserved(WorldDef{Boundary::box, {0.0, 0.0}, {20.0, 20.0}});
+  reserved.reserve(100);
+  for (const BallId id : plain.balls()) {
+    BallDef def = ball_at(plain.position(id), plain.velocity(id), plain.radius(id));
+    def.mass = plain.mass(id);
+    EXPECT_EQ(reserved.add_ball(def), id);
+  }
+  plain.run_collisions(2000);
+  reserved.run_collisions(2000);
+  for (const BallId id : plain.balls()) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(reserved.position(id).x),
+              std::bit_cast<std::uint64_t>(plain.position(id).x));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(reserved.velocity(id).y),
+              std::bit_cast<std::uint64_t>(plain.velocity(id).y));
+  }
+  EXPECT_THROW(reserved.reserve(std::size_t{1} << 31), InvalidArgument);
+}
+
 TEST(WorldApi, RunCollisionsResolvesExactlyThatMany) {
   World world = box_of_balls(51, 6, 10.0);
   for (std::uint64_t count : {1u, 7u, 40u}) {

@@ -1,11 +1,8 @@
 // `carom run`: the three ways to advance, the outputs it writes (frames, events, end state,
 // summary), and Ctrl-C leaving complete files.
-#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -172,21 +169,10 @@ TEST(RunCommand, InterruptLeavesCompleteFiles) {
   const std::string frames = (dir / "gas.csv").string();
   const std::string events = (dir / "gas.jsonl").string();
   const std::string save = (dir / "gas-end.json").string();
-  std::vector<std::string> words{CAROM_CLI_PATH, "run",     example("periodic-gas.json"),
-                                 "--until",      "10000",   "--frames",
-                                 frames,         "--every", "0.05",
-                                 "--events",     events,    "--save",
-                                 save,           "--quiet"};
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t child = 0;
-  ASSERT_EQ(posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
+  const pid_t child =
+      start_carom({"run", example("periodic-gas.json"), "--until", "10000", "--frames", frames,
+                   "--every", "0.05", "--events", events, "--save", save, "--quiet"});
+  ASSERT_GT(child, 0);
   // Wait until the run is under way (its first frame is being written), then interrupt.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!std::filesystem::exists(frames + ".tmp")) {
@@ -195,10 +181,9 @@ TEST(RunCommand, InterruptLeavesCompleteFiles) {
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   kill(child, SIGINT);
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const int exit_code = wait_for_exit(child);
+  ASSERT_NE(exit_code, -1);  // it exited, rather than dying of the signal
+  EXPECT_EQ(exit_code, 130);
   EXPECT_FALSE(std::filesystem::exists(frames + ".tmp"));
   EXPECT_FALSE(std::filesystem::exists(events + ".tmp"));
   // Frames: a header and whole frames of 10^5 rows, every row complete.

@@ -2,14 +2,10 @@
 // checkpoint that resumes to the same end, byte for byte, as a run never stopped; and a run
 // killed between the two renames of a checkpoint (FILE → FILE.prev, FILE.tmp → FILE) leaves two
 // complete checkpoints, the missing FILE pointing at FILE.prev (docs/checkpoints.md).
-#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -56,31 +52,6 @@ TEST(RunInterrupt, KillBetweenTheTwoRenamesLeavesTwoCompleteCheckpoints) {
     ASSERT_EQ(resumed.exit_code, 0) << suffix << ": " << resumed.err;
     EXPECT_EQ(read_file(out), first_end) << "resumed from FILE" << suffix;
   }
-}
-
-// Starts the tool without waiting for it; its output is discarded.
-pid_t start_carom(const std::vector<std::string>& args) {
-  std::vector<std::string> words{CAROM_CLI_PATH};
-  words.insert(words.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t child = 0;
-  const int spawned = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return spawned == 0 ? child : -1;
-}
-
-int wait_for_exit(pid_t child) {
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 TEST(RunInterrupt, CtrlCLeavesACheckpointThatResumesBitIdentical) {

@@ -33,13 +33,9 @@ class CaptureFile {
   int fd_;
 };
 
-}  // namespace
-
-ToolRun run_carom(const std::vector<std::string>& args) {
-  const ScratchDir streams;
-  const CaptureFile out(streams, "stdout");
-  const CaptureFile err(streams, "stderr");
-
+// Starts the tool (CAROM_CLI_PATH) with args, its stdout and stderr sent to the given
+// descriptors, or to /dev/null for -1; the child's pid, or -1 if it cannot be started.
+pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd) {
   std::vector<std::string> words{CAROM_CLI_PATH};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -49,13 +45,40 @@ ToolRun run_carom(const std::vector<std::string>& args) {
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, out.fd(), STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, err.fd(), STDERR_FILENO);
+  const auto send = [&actions](int fd, int stream) {
+    if (fd >= 0) {
+      posix_spawn_file_actions_adddup2(&actions, fd, stream);
+    } else {
+      posix_spawn_file_actions_addopen(&actions, stream, "/dev/null", O_WRONLY, 0);
+    }
+  };
+  send(out_fd, STDOUT_FILENO);
+  send(err_fd, STDERR_FILENO);
   pid_t child = 0;
   // environ (from unistd.h) passes the test's own environment on.
   const int spawned = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error(std::string("cannot run ") + CAROM_CLI_PATH);
+  return spawned == 0 ? child : -1;
+}
+
+}  // namespace
+
+pid_t start_carom(const std::vector<std::string>& args) { return spawn_carom(args, -1, -1); }
+
+int wait_for_exit(pid_t child) {
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+ToolRun run_carom(const std::vector<std::string>& args) {
+  const ScratchDir streams;
+  const CaptureFile out(streams, "stdout");
+  const CaptureFile err(streams, "stderr");
+  const pid_t child = spawn_carom(args, out.fd(), err.fd());
+  if (child < 0) throw std::runtime_error(std::string("cannot run ") + CAROM_CLI_PATH);
 
   int status = 0;
   while (waitpid(child, &status, 0) < 0) {

@@ -2,6 +2,8 @@
 // files it writes.
 #pragma once
 
+#include <sys/types.h>  // pid_t
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +19,11 @@ struct ToolRun {
 // Runs the tool (CAROM_CLI_PATH) with args and waits for it. Its output goes through files, so
 // neither stream can block the other however much is written.
 [[nodiscard]] ToolRun run_carom(const std::vector<std::string>& args);
+
+// Starts the tool with args without waiting for it, its output discarded; -1 if it cannot start.
+[[nodiscard]] pid_t start_carom(const std::vector<std::string>& args);
+// Waits for a tool started so: its exit status, or -1 if it did not exit normally.
+[[nodiscard]] int wait_for_exit(pid_t child);
 
 // A fresh, empty folder for one test, removed with everything in it when the test ends.
 class ScratchDir {

@@ -197,8 +197,6 @@ class Harness {
           const Vec2 b = (kind & 6) == 0 ? a : position(in_);
           CAROM_TRACE("add_segment({%.17g, %.17g}, {%.17g, %.17g})\n", a.x, a.y, b.x, b.y);
           world().add_segment({a, b});
-          wall_points_.push_back(a);
-          wall_points_.push_back(b);
         } else {
           const Vec2 c = position(in_);
           const double radius = 0.5 + 8.0 * in_.unit();
@@ -211,7 +209,6 @@ class Harness {
                       start + span);
           world().add_arc({c, radius, start, start + span});
           circles_.push_back({c, radius});
-          wall_points_.push_back(c - Vec2{radius, radius});
         }
       } catch (const carom::InvalidArgument& error) {
         fail("a valid wall was refused:", error.what());
@@ -581,8 +578,7 @@ class Harness {
     Vec2 center;
     double radius = 0.0;
   };
-  std::vector<Circle> circles_;    // of the arcs
-  std::vector<Vec2> wall_points_;  // the segments' ends
+  std::vector<Circle> circles_;  // of the arcs
   bool touching_an_arc_ = false;
   bool jammed_ = false;  // a run refused a jammed chain of balls: the input ends
   double energy_ = 0.0;

@@ -24,6 +24,12 @@ std::string number(double value) { return detail::number_text(value); }
   throw InvalidArgument(function, argument, value, requirement);
 }
 
+[[noreturn]] void refuse_too_many(const char* function, const char* argument,
+                                  const std::string& value) {
+  refuse(function, argument, value,
+         "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
+}
+
 void validate_ball_def(const char* function, const BallDef& def) {
   detail::require_finite(function, "def.position", def.position);
   detail::require_finite(function, "def.velocity", def.velocity);
@@ -154,10 +160,7 @@ BallId World::add_ball(const BallDef& def) {
     slot = w.slot_of_handle[w.free_slots.back()];
     w.free_slots.pop_back();
   } else {
-    if (w.balls.size() >= detail::EventQueue::kMaxBalls) {
-      refuse(kFunction, "def", "-",
-             "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
-    }
+    if (w.balls.size() >= detail::EventQueue::kMaxBalls) refuse_too_many(kFunction, "def", "-");
     slot = static_cast<std::uint32_t>(w.balls.size());
     w.balls.emplace_back();
     w.infos.emplace_back();
@@ -204,8 +207,7 @@ void World::remove_ball(BallId id) {
 
 void World::reserve(std::size_t count) {
   if (count > detail::EventQueue::kMaxBalls) {
-    refuse("World::reserve", "count", std::to_string(count),
-           "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
+    refuse_too_many("World::reserve", "count", std::to_string(count));
   }
   Impl& w = *impl_;
   w.balls.reserve(count);

@@ -269,6 +269,13 @@ void contact_with_arc_interior(const Ball& ball, Vec2 velocity, const ArcFrame& 
       offset_motion(ball.center, arc.center, velocity, arc.radius, ball.radius);
   if (!detail::within_distance(outer.s, outer.radius)) {
     consider(outer, entry_crossing(outer, horizon), 1.0, -1.0);
+  } else if (!detail::strictly_within_distance(outer.s, outer.radius) &&
+             detail::dot_positive(-outer.s, outer.u)) {
+    // Exactly on the circle along which the ball touches the arc's outside (where nearest_free
+    // stops it, say) and moving inwards: it touches now. entry_crossing's root is at t = 0, and
+    // contact_at_start's gap to the nearest point may round to just beyond the radius, so
+    // neither would report it and the ball would pass into the arc.
+    consider(outer, {true, 0.0}, 1.0, -1.0);
   }
   ScaledMotion inner = offset_motion(ball.center, arc.center, velocity, arc.radius, -ball.radius);
   if (inner.radius > 0.0) {

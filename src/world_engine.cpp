@@ -54,11 +54,16 @@ constexpr std::int32_t kInteriorMinCells = 5;
 // by under two cells per axis, and a pair that touches (within one cell) was within three cells
 // when predicted, under half a period from 7 cells on (6 leaves no room for the cell margin).
 constexpr std::int32_t kSingleImageMinCells = 7;
-// Contacts at one instant beyond this many per ball (plus a floor) mean a jammed chain of
-// touching balls, whose contacts at that instant never end (docs/world.md, "Known limits"): a
-// Newton's cradle has one per ball, a break from rest a few.
-constexpr std::uint64_t kInstantContactsPerBall = 100;
-constexpr std::uint64_t kInstantContactsFloor = 1 << 20;
+// Contacts without measurable motion (a jammed chain of touching balls), or events at one
+// instant (a jam, or time too large to advance), beyond this many per ball plus a floor mean a
+// run that would never end (docs/world.md, "Known limits"). A Newton's cradle has one contact a
+// ball at one instant, a break from rest a few.
+constexpr std::uint64_t kInstantEventsPerBall = 100;
+constexpr std::uint64_t kInstantEventsFloor = 1 << 16;
+// A contact counts as motion when one of its balls has travelled more than this fraction of its
+// coordinates' size (|x| + |y| + radius) since the last one that did: a jammed ball creeps a
+// rounding at a time, so its contacts advance time by ulps rather than not at all.
+constexpr double kMeasurableMotion = 0x1p-30;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
@@ -377,7 +382,12 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
   // it; each failed proof doubles the stretch before the next, so proofs (O(N²)) stay rare.
   std::uint64_t without_contact = 0;
   std::uint64_t next_proof = std::max<std::uint64_t>(kEventsBeforeProof, 2 * live_count);
-  // Contacts at the world's present instant: a jammed chain of touching balls has them for ever.
+  // Runs that would never end (docs/world.md, "Known limits"): contacts since the last contact
+  // that moved a ball measurably (a jam), and events at the previous event's very time (a jam,
+  // or a time whose rounding step is longer than the motion, so that it no longer advances).
+  const std::uint64_t endless = kInstantEventsPerBall * live_count + kInstantEventsFloor;
+  double motion_time = -kInfinity;
+  std::uint64_t contacts_without_motion = 0;
   double instant = -kInfinity;
   std::uint64_t at_instant = 0;
   for (;;) {
@@ -385,7 +395,14 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     const Event event = queue.top();
     if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;
-    if (!process(event)) {
+    const bool contact = process(event);
+    if (time != instant) {
+      instant = time;
+      at_instant = 0;
+    } else if (++at_instant > endless) {
+      refuse_endless(function, at_instant, event);
+    }
+    if (!contact) {
       if (end == kInfinity && ++without_contact >= next_proof) {
         if (no_contact_ever()) break;
         next_proof *= 2;
@@ -396,11 +413,11 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     without_contact = 0;
     ++resolved;
     ++collisions;
-    if (time != instant) {
-      instant = time;
-      at_instant = 0;
-    } else if (++at_instant > kInstantContactsPerBall * live_count + kInstantContactsFloor) {
-      refuse_jammed(function, at_instant);
+    if (moved_measurably(event, time - motion_time)) {
+      motion_time = time;
+      contacts_without_motion = 0;
+    } else if (++contacts_without_motion > endless) {
+      refuse_endless(function, contacts_without_motion, event);
     }
     const bool stop = stop_condition && stop_condition(last_contact);
     if (stop || resolved == max_contacts) {
@@ -414,12 +431,37 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
   return resolved;
 }
 
-void World::Impl::refuse_jammed(const char* function, std::uint64_t count) const {
+bool World::Impl::moved_measurably(const Event& contact, double elapsed) const {
+  if (elapsed == kInfinity) return true;  // the run's first contact
+  const auto moved = [&](std::uint32_t ball) {
+    const BallSlot& b = balls[ball];
+    // |x| + |y| bounds the length within a factor √2, which is all a threshold needs.
+    const double travel = elapsed * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
+    const double size = std::abs(b.position.x) + std::abs(b.position.y) + b.radius;
+    return travel > kMeasurableMotion * size;
+  };
+  return moved(contact.owner) || (contact.kind == EventKind::ball_ball && moved(contact.partner));
+}
+
+void World::Impl::refuse_endless(const char* function, std::uint64_t count,
+                                 const Event& last) const {
+  const std::string what = std::to_string(count) + " events at t = " + detail::number_text(time);
+  // Time stalls where its step to the next double would move the event's ball measurably: the
+  // motion between events is then lost to rounding. Otherwise the balls are jammed.
+  const double time_step = std::nextafter(time, kInfinity) - time;
+  if (moved_measurably(last, time_step)) {
+    throw InvalidArgument(
+        function, "world", what,
+        "has stalled: at this time the step between neighbouring doubles is longer than the "
+        "motion to the next event, so events no longer advance time; continue the motion in a "
+        "new world, from time 0 (docs/world.md, \"Known limits\")");
+  }
   throw InvalidArgument(
-      function, "world", std::to_string(count) + " contacts at t = " + detail::number_text(time),
-      "has balls jammed: a closed chain of exactly touching balls (a row around the periodic "
-      "cell, or from wall to wall) passes its contacts on at one instant for ever; leave a gap "
-      "(docs/world.md, \"Known limits\")");
+      function, "world", what,
+      "has balls jammed: balls held by touching balls and walls on every side (a closed row of "
+      "exactly touching balls around the periodic cell or from wall to wall, a ball wedged in a "
+      "corner) pass their contacts on without moving, for ever; leave a gap (docs/world.md, "
+      "\"Known limits\")");
 }
 
 bool World::Impl::process(const Event& event) {

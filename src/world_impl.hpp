@@ -181,7 +181,12 @@ struct World::Impl {
   // false means "not proven", not "a contact will happen".
   [[nodiscard]] bool no_contact_ever() const;
   bool process(const detail::Event& event);  // true when a contact was resolved
-  [[noreturn]] void refuse_jammed(const char* function, std::uint64_t count) const;
+  // Whether a contact's balls have moved measurably in `elapsed` (run's jam detection).
+  [[nodiscard]] bool moved_measurably(const detail::Event& contact, double elapsed) const;
+  // Refuses a run that would never end after `count` events at one instant or contacts without
+  // motion, the last of them `last`: a jam, or a stall of time.
+  [[noreturn]] void refuse_endless(const char* function, std::uint64_t count,
+                                   const detail::Event& last) const;
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);

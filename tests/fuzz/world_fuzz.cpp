@@ -371,9 +371,10 @@ class Harness {
     try {
       call(world());
     } catch (const carom::InvalidArgument& e) {
-      // A jammed chain of touching balls is refused mid-run (docs/world.md, "Known limits"): the
+      // Jammed balls and a stalled time are refused mid-run (docs/world.md, "Known limits"): the
       // world must still be valid; the input ends, since its future is undefined.
-      check(std::string(e.what()).find("jammed") != std::string::npos,
+      const std::string what = e.what();
+      check(what.find("jammed") != std::string::npos || what.find("stalled") != std::string::npos,
             "a run threw for a valid call");
       jammed_ = true;
       return;
@@ -580,7 +581,7 @@ class Harness {
   };
   std::vector<Circle> circles_;  // of the arcs
   bool touching_an_arc_ = false;
-  bool jammed_ = false;  // a run refused a jammed chain of balls: the input ends
+  bool jammed_ = false;  // a run refused jammed balls or a stalled time: the input ends
   double energy_ = 0.0;
 };
 

@@ -199,7 +199,7 @@ TEST(WorldExtreme, MillionTouchingDisksCollideAndStayApartLong) {
 // jammed: no ball can move along the row unless all do, yet the engine would resolve the
 // contacts at time 0 one by one, for ever (each bounce passes the relative motion on around the
 // ring), and step(dt) never returned. The engine now counts the contacts at one instant and
-// refuses the world past 100 a ball plus 2^20 (world_engine.cpp), naming the jam.
+// refuses the world past 100 a ball plus 2^16 (world_engine.cpp), naming the jam.
 TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
   WorldDef def;
   def.boundary = Boundary::periodic;
@@ -458,6 +458,71 @@ TEST(WorldFuzzFound, BallDraggedAgainstTheInsideOfAnArcBouncesBack) {
   EXPECT_EQ(world.contacts()[0].wall, bowl);
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
   EXPECT_LT(length(world.position(ball) - center), 5.9999618524452583 - 0.5);
+}
+
+// Found by the world fuzzer (tests/fuzz/corpus/world/ball-dragged-against-outside-of-arc): a
+// ball exactly touching a full arc's outside (9 from its centre: arc 8.5 + ball 0.5), dragged
+// towards the centre with nearest_free, went through it and stopped on a smaller concentric arc
+// inside, overlapping the first by 0.001: the arc's outer contact at t = 0 was reported neither
+// by the start-contact test (its gap rounded beyond the radius) nor by the crossing (at t = 0).
+TEST(WorldFuzzFound, BallDraggedAgainstTheOutsideOfAnArcStaysThere) {
+  World world;
+  const Vec2 center{20.0, 20.0};
+  world.add_arc({center, 8.5, 3.1415926535897931, 9.4247779607693793});
+  world.add_arc({center, 8.4990234225986114, 3.1415926535897931, 9.4247779607693793});
+  const Vec2 touching{12.516736203828959, 14.999923704890517};
+  ASSERT_EQ(length(touching - center), 9.0);
+  const BallId ball = world.add_ball(extreme_ball(touching, {}, 0.5, 1.0));
+  EXPECT_EQ(world.set_position(ball, center, Placement::nearest_free), touching);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// Found by the world fuzzer (a timeout in CI): a ball of radius 3 in the top-right corner of a
+// box, touching both walls, with an immovable ball dragged against it from the lower left, is
+// wedged: every way it can move is blocked. Its contacts did not come at one instant (which the
+// jam rule counted) but a rounding apart, time creeping by ulps, so step(4.5) would have taken
+// about 10^17 contacts. Contacts that move no ball measurably now count as one instant's.
+TEST(WorldFuzzFound, BallWedgedInACornerIsRefusedNotHung) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {20.0, 20.0};
+  World world(def);
+  world.add_ball(extreme_ball({17.0, 17.0}, {7.0, 0.0}, 3.0, 1.0));
+  const BallId wedge = world.add_ball(extreme_ball({3.9, 4.0}, {}, 0.1, kImmovable));
+  world.set_position(wedge, {20.0, 20.0}, Placement::nearest_free);  // stops touching the ball
+  try {
+    world.step(4.5);
+    ADD_FAILURE() << "a wedged ball stepped to t = " << world.time();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("jammed"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(world.time(), 1e-6);  // refused near where it jammed
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// Found by the world fuzzer (a timeout): at t = 10^24 neighbouring doubles are 1.3·10^8 apart, so
+// a ball's next wall contact 9.5 time units ahead rounds to now, and the run processed it, and the
+// next, at the same time for ever (each a bounce 9.5 away from the wall: a known limit, below).
+// Events at one instant past the jam limit are now refused, and named a stall when the step to
+// the next double would move the ball measurably.
+TEST(WorldFuzzFound, TimeTooLargeToAdvanceIsRefusedAsAStall) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {20.0, 20.0};
+  World world(def);
+  world.run_until(1e24);
+  world.add_ball(extreme_ball({10.0, 10.0}, {1.0, 0.0}));
+  try {
+    world.step(1.0);
+    ADD_FAILURE() << "a stalled world stepped to t = " << world.time();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.function(), "World::step");
+    EXPECT_NE(std::string(e.what()).find("stalled"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(world.time(), 1e24);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
 
 // ---- periodic cells only a few grid cells wide ------------------------------------------------

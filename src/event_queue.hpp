@@ -35,8 +35,10 @@ class EventQueue {
   // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();
-  // The largest ball index an event can name (two bits of the owner field hold the kind).
+  // The most balls, and walls, an event can name (two bits of the owner and partner fields hold
+  // the kind).
   static constexpr std::uint32_t kMaxBalls = 1u << 30;
+  static constexpr std::uint32_t kMaxWalls = 1u << 30;
 
  private:
   static constexpr std::uint32_t kNoEvent = std::numeric_limits<std::uint32_t>::max();  // links
@@ -45,7 +47,16 @@ class EventQueue {
   // Bucket numbers stay far below 2^62 so that converting them to integers is exact and safe.
   static constexpr double kLastBucket = 0x1p62;
 
-  // An event without its partner's version, 16 bytes.
+  // A ball's pending event, 16 bytes: its owner is its place in events_.
+  struct Pending {
+    double time;
+    std::uint32_t partner_and_kind;  // the partner in the low 30 bits, the EventKind above
+    std::uint32_t partner_version;
+    [[nodiscard]] std::uint32_t partner() const { return partner_and_kind & (kMaxBalls - 1); }
+    [[nodiscard]] EventKind kind() const { return static_cast<EventKind>(partner_and_kind >> 30); }
+  };
+  // A heap member: the event without its partner's version but with its owner, 16 bytes, so
+  // that sifting compares without reaching into events_.
   struct Entry {
     double time;
     std::uint32_t owner_and_kind;  // owner in the low 30 bits, the EventKind above
@@ -56,6 +67,10 @@ class EventQueue {
   enum class Place : std::uint8_t { none, heap, bucket, overflow };
 
   [[nodiscard]] Event unpack(std::uint32_t owner) const;
+  [[nodiscard]] Entry entry_of(std::uint32_t owner) const {
+    const Pending& pending = events_[owner];
+    return {pending.time, owner | (pending.partner_and_kind & ~(kMaxBalls - 1)), pending.partner()};
+  }
   // The order of world_event.hpp's `earlier`, on entries: the time settles it but for ties.
   [[nodiscard]] bool before(const Entry& a, const Entry& b) const {
     if (a.time != b.time) return a.time < b.time;
@@ -78,12 +93,11 @@ class EventQueue {
   }
   // Starts a new year from the overflow list; false when no finite event is left.
   bool open_year();
-  // Empties the heap, the buckets and the lists, keeping events_ and partner_versions_.
+  // Empties the heap, the buckets and the lists, keeping events_.
   void clear_places(std::uint32_t count);
 
   // By ball.
-  BigVector<Entry> events_;
-  BigVector<std::uint32_t> partner_versions_;
+  BigVector<Pending> events_;
   BigVector<Place> places_;
   BigVector<std::uint32_t> link_next_;  // list successor, or heap position
   BigVector<std::uint32_t> link_prev_;  // list predecessor (kNone at a list's head)

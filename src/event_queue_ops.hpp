@@ -9,13 +9,13 @@
 namespace carom::detail {
 
 inline Event EventQueue::unpack(std::uint32_t owner) const {
-  const Entry& entry = events_[owner];
+  const Pending& pending = events_[owner];
   Event event;
-  event.time = entry.time;
-  event.kind = entry.kind();
+  event.time = pending.time;
+  event.kind = pending.kind();
   event.owner = owner;
-  event.partner = entry.partner;
-  event.partner_version = partner_versions_[owner];
+  event.partner = pending.partner();
+  event.partner_version = pending.partner_version;
   return event;
 }
 
@@ -32,9 +32,8 @@ inline std::int64_t EventQueue::bucket_of(double time) const {
 
 inline void EventQueue::set(std::uint32_t owner, const Event& event) {
   remove(owner);
-  events_[owner] = {event.time, owner | (static_cast<std::uint32_t>(event.kind) << 30),
-                    event.partner};
-  partner_versions_[owner] = event.partner_version;
+  events_[owner] = {event.time, event.partner | (static_cast<std::uint32_t>(event.kind) << 30),
+                    event.partner_version};
   insert(owner);
 }
 
@@ -117,7 +116,7 @@ inline Event EventQueue::top() {
 
 inline void EventQueue::heap_push(std::uint32_t owner) {
   places_[owner] = Place::heap;
-  heap_.push_back(events_[owner]);
+  heap_.push_back(entry_of(owner));
   heap_sift_up(static_cast<std::uint32_t>(heap_.size() - 1));
 }
 

@@ -30,6 +30,14 @@ std::string number(double value) { return detail::number_text(value); }
          "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
 }
 
+// Events name a wall in 30 bits (event_queue.hpp).
+void require_room_for_a_wall(const char* function, const char* argument, std::size_t walls) {
+  if (walls >= detail::EventQueue::kMaxWalls) {
+    refuse(function, argument, "-",
+           "a world holds at most " + std::to_string(detail::EventQueue::kMaxWalls) + " walls");
+  }
+}
+
 void validate_ball_def(const char* function, const BallDef& def) {
   detail::require_finite(function, "def.position", def.position);
   detail::require_finite(function, "def.velocity", def.velocity);
@@ -46,7 +54,7 @@ std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   if (id.is_null()) refuse(function, "id", "null", "must be a ball of this world");
   const std::uint32_t slot =
       id.index < slot_of_handle.size() ? slot_of_handle[id.index] : std::uint32_t{0};
-  if (id.index >= slot_of_handle.size() || !balls[slot].alive ||
+  if (id.index >= slot_of_handle.size() || !balls[slot].alive() ||
       infos[slot].generation != id.generation) {
     refuse(function, "id",
            "{" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}",
@@ -96,7 +104,7 @@ std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) cons
       const auto other = static_cast<std::uint32_t>(j);
       if (other == except) continue;
       const Vec2 gap = minimum_image(position_at(other, time) - p);
-      const double reach = r + balls[other].radius;
+      const double reach = r + radius_of(other);
       if (length_squared(gap) < reach * reach) {
         found = "it overlaps ball " + std::to_string(other) + " by " + number(reach - length(gap));
       }
@@ -173,12 +181,10 @@ BallId World::add_ball(const BallDef& def) {
   b.position = position;
   b.velocity = def.velocity;
   b.local_time = w.time;
-  b.radius = def.radius;
-  b.mass = def.mass;
-  b.alive = true;
+  const double restitution = def.restitution.value_or(w.def.restitution);
+  b.species = w.species.acquire(def.radius, def.mass, restitution);
+  if (restitution != w.def.restitution) w.mixed_restitution = true;
   detail::BallInfo& info = w.infos[slot];
-  info.restitution = def.restitution.value_or(w.def.restitution);
-  if (info.restitution != w.def.restitution) w.mixed_restitution = true;
   if (w.def.collapse_time > 0.0) {
     w.last_contact_times[slot] = -std::numeric_limits<double>::infinity();
   }
@@ -196,7 +202,8 @@ void World::remove_ball(BallId id) {
   const std::uint32_t slot = w.slot_of("World::remove_ball", id);
   BallSlot& b = w.balls[slot];
   w.grid.erase(slot);
-  b.alive = false;
+  w.species.release(b.species);
+  b.species = detail::kNoSpecies;
   ++b.version;
   std::uint32_t& generation = w.infos[slot].generation;
   generation = generation == std::numeric_limits<std::uint32_t>::max() ? 1 : generation + 1;
@@ -222,14 +229,14 @@ bool World::contains(BallId id) const noexcept {
   const Impl& w = *impl_;
   if (id.is_null() || id.index >= w.slot_of_handle.size()) return false;
   const std::uint32_t slot = w.slot_of_handle[id.index];
-  return w.balls[slot].alive && w.infos[slot].generation == id.generation;
+  return w.balls[slot].alive() && w.infos[slot].generation == id.generation;
 }
 
 std::vector<BallId> World::balls() const {
   std::vector<BallId> ids;
   ids.reserve(impl_->live_count);
   for (const std::uint32_t slot : impl_->slot_of_handle) {  // in handle order
-    if (impl_->balls[slot].alive) ids.push_back(impl_->id_of(slot));
+    if (impl_->balls[slot].alive()) ids.push_back(impl_->id_of(slot));
   }
   return ids;
 }
@@ -242,6 +249,7 @@ WallId World::add_segment(const Segment& segment) {
   if (w.def.boundary == Boundary::periodic) {
     refuse(kFunction, "segment", "-", "walls in a periodic world are not supported yet");
   }
+  require_room_for_a_wall(kFunction, "segment", w.walls.size());
   w.walls.push_back(detail::make_segment_wall(segment));
   w.grid_valid = false;
   w.events_valid = false;
@@ -266,6 +274,7 @@ WallId World::add_arc(const Arc& arc) {
   if (w.def.boundary == Boundary::periodic) {
     refuse(kFunction, "arc", "-", "walls in a periodic world are not supported yet");
   }
+  require_room_for_a_wall(kFunction, "arc", w.walls.size());
   w.walls.push_back(wall);
   w.grid_valid = false;
   w.events_valid = false;
@@ -349,10 +358,12 @@ Vec2 World::velocity(BallId id) const {
 }
 
 double World::radius(BallId id) const {
-  return impl_->balls[impl_->slot_of("World::radius", id)].radius;
+  return impl_->radius_of(impl_->slot_of("World::radius", id));
 }
 
-double World::mass(BallId id) const { return impl_->balls[impl_->slot_of("World::mass", id)].mass; }
+double World::mass(BallId id) const {
+  return impl_->species_of(impl_->slot_of("World::mass", id)).mass;
+}
 
 std::uint64_t World::user_data(BallId id) const {
   return impl_->infos[impl_->slot_of("World::user_data", id)].user_data;
@@ -365,7 +376,8 @@ double World::kinetic_energy() const noexcept {
   double energy = 0.0;
   for (const std::uint32_t i : impl_->slot_of_handle) {
     const BallSlot& b = impl_->balls[i];
-    if (b.alive && b.movable()) energy += 0.5 * b.mass * length_squared(b.velocity);
+    if (!b.alive() || !impl_->movable(i)) continue;
+    energy += 0.5 * impl_->species_of(i).mass * length_squared(b.velocity);
   }
   return energy;
 }
@@ -374,7 +386,7 @@ Vec2 World::momentum() const noexcept {
   Vec2 total;
   for (const std::uint32_t i : impl_->slot_of_handle) {  // in handle order, as kinetic_energy
     const BallSlot& b = impl_->balls[i];
-    if (b.alive && b.movable()) total += b.velocity * b.mass;
+    if (b.alive() && impl_->movable(i)) total += b.velocity * impl_->species_of(i).mass;
   }
   return total;
 }
@@ -411,14 +423,14 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
         periodic ? w.minimum_image(w.wrap_into_cell(position) - from) : position - from;
     const int images = periodic ? 1 : 0;
     double fraction = 1.0;
-    const Ball moving{from, b.radius};
+    const Ball moving{from, w.radius_of(slot)};
     for (std::uint32_t j = 0; j < w.balls.size(); ++j) {
-      if (j == slot || !w.balls[j].alive) continue;
+      if (j == slot || !w.balls[j].alive()) continue;
       const Vec2 nearest = from + w.minimum_image(w.position_at(j, w.time) - from);
       for (int kx = -images; kx <= images; ++kx) {
         for (int ky = -images; ky <= images; ++ky) {
           const Vec2 other = nearest + Vec2{kx * w.period.x, ky * w.period.y};
-          const Impact hit = sweep_ball_ball(moving, move, {other, w.balls[j].radius});
+          const Impact hit = sweep_ball_ball(moving, move, {other, w.radius_of(j)});
           if (hit.hit) fraction = std::min(fraction, hit.t);
         }
       }
@@ -430,10 +442,11 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
     target = from + move * fraction;
   }
   target = w.wrap_into_cell(target);
-  w.ensure_grid(target, b.radius);
+  w.ensure_grid(target, w.radius_of(slot));
   // The swept stop point touches its obstacle, and may overlap it by a rounding: it is accepted.
-  const std::string overlap =
-      placement == Placement::nearest_free ? std::string{} : w.overlap_at(target, b.radius, slot);
+  const std::string overlap = placement == Placement::nearest_free
+                                  ? std::string{}
+                                  : w.overlap_at(target, w.radius_of(slot), slot);
   if (!overlap.empty()) {
     refuse(kFunction, "position", detail::vector_text(position),
            "the ball cannot go there: " + overlap);

@@ -44,16 +44,17 @@ double position_rounding(Vec2 p, Vec2 v, double time) {
 Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) const {
   const Impl& w = *this;
   const detail::BallSlot& a = w.balls[i];
+  const double radius = w.radius_of(i);
   if (!is_finite(p) || !is_finite(a.velocity)) {
     return ball_name(w.handle_of[i]) + " has a non-finite position or velocity";
   }
   if (w.def.boundary == Boundary::box) {
     const double box_scale = std::max({std::abs(w.def.lower.x), std::abs(w.def.lower.y),
                                        std::abs(w.def.upper.x), std::abs(w.def.upper.y)});
-    const double slack = tolerance * a.radius + position_rounding(p, a.velocity, w.time) +
+    const double slack = tolerance * radius + position_rounding(p, a.velocity, w.time) +
                          kRoundingUlps * std::numeric_limits<double>::epsilon() * box_scale;
-    if (p.x - a.radius < w.def.lower.x - slack || p.x + a.radius > w.def.upper.x + slack ||
-        p.y - a.radius < w.def.lower.y - slack || p.y + a.radius > w.def.upper.y + slack) {
+    if (p.x - radius < w.def.lower.x - slack || p.x + radius > w.def.upper.x + slack ||
+        p.y - radius < w.def.lower.y - slack || p.y + radius > w.def.upper.y + slack) {
       return ball_name(w.handle_of[i]) + " reaches outside the box";
     }
   }
@@ -63,7 +64,7 @@ Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) con
 Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
                                   double tolerance) const {
   const Impl& w = *this;
-  const double radius = w.balls[i].radius;
+  const double radius = w.radius_of(i);
   const double gap = length(detail::nearest_point(w.walls[k], p) - p);
   const double slack = tolerance * radius + position_rounding(p, w.balls[i].velocity, w.time);
   if (gap < radius - slack) {
@@ -78,8 +79,8 @@ Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
   const Impl& w = *this;
   // Two immovable balls pass through each other (nothing could respond; docs/world.md): their
   // overlap breaks no promise.
-  if (!w.balls[i].movable() && !w.balls[j].movable()) return std::nullopt;
-  const double reach = w.balls[i].radius + w.balls[j].radius;
+  if (!w.movable(i) && !w.movable(j)) return std::nullopt;
+  const double reach = w.radius_of(i) + w.radius_of(j);
   const Vec2 q = w.position_at(j, w.time);
   const double gap = length(w.minimum_image(q - p));
   const double slack = tolerance * reach + position_rounding(p, w.balls[i].velocity, w.time) +
@@ -96,14 +97,14 @@ Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
 Violation World::Impl::audit_all_pairs(double tolerance) const {
   const Impl& w = *this;
   for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
-    if (!w.balls[i].alive) continue;
+    if (!w.balls[i].alive()) continue;
     const Vec2 p = w.position_at(i, w.time);
     if (Violation v = audit_ball(i, p, tolerance)) return v;
     for (std::uint32_t k = 0; k < w.walls.size(); ++k) {
       if (Violation v = audit_wall(i, p, k, tolerance)) return v;
     }
     for (std::uint32_t j = i + 1; j < w.balls.size(); ++j) {
-      if (!w.balls[j].alive) continue;
+      if (!w.balls[j].alive()) continue;
       if (Violation v = audit_pair(i, p, j, tolerance)) return v;
     }
   }
@@ -117,7 +118,7 @@ Violation World::Impl::audit_all_pairs(double tolerance) const {
 Violation World::Impl::audit_with_grid(double tolerance) const {
   const Impl& w = *this;
   for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
-    if (!w.balls[i].alive) continue;
+    if (!w.balls[i].alive()) continue;
     const Vec2 p = w.position_at(i, w.time);
     if (Violation v = audit_ball(i, p, tolerance)) return v;
     const std::int32_t cell = grid.cell_of_ball(i);

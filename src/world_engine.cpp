@@ -112,8 +112,8 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   Vec2 lower = extra_point;
   Vec2 upper = extra_point;
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
-    if (!balls[i].alive) continue;
-    largest = std::max(largest, balls[i].radius);
+    if (!balls[i].alive()) continue;
+    largest = std::max(largest, radius_of(i));
     const Vec2 p = position_at(i, time);
     lower = {std::min(lower.x, p.x), std::min(lower.y, p.y)};
     upper = {std::max(upper.x, p.x), std::max(upper.y, p.y)};
@@ -142,7 +142,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   grid.setup(lower, {extent.x / nx, extent.y / ny}, nx, ny, def.boundary == Boundary::periodic,
              static_cast<std::uint32_t>(balls.size()));
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
-    if (balls[i].alive) grid.insert(i, grid.cell_of(position_at(i, time)));
+    if (balls[i].alive()) grid.insert(i, grid.cell_of(position_at(i, time)));
   }
   std::vector<Vec2> wall_lower(walls.size());
   std::vector<Vec2> wall_upper(walls.size());
@@ -184,7 +184,7 @@ void World::Impl::sort_by_cell() {
     }
   }
   for (std::uint32_t i = 0; i < slots; ++i) {
-    if (!balls[i].alive) new_slot[i] = next++;
+    if (!balls[i].alive()) new_slot[i] = next++;
   }
   detail::move_to(balls, new_slot);
   detail::move_to(infos, new_slot);
@@ -208,7 +208,7 @@ void World::Impl::advance(std::uint32_t ball, double t) {
 
 void World::Impl::synchronize(double t) {
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
-    if (balls[i].alive) advance(i, t);
+    if (balls[i].alive()) advance(i, t);
   }
   time = t;
 }
@@ -218,7 +218,7 @@ void World::Impl::predict_all() {
   queue.reset(static_cast<std::uint32_t>(balls.size()));
   queue.use_handles(handle_of.data());
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
-    if (balls[i].alive) predict(i);
+    if (balls[i].alive()) predict(i);
   }
   events_valid = true;
 }
@@ -259,7 +259,8 @@ void World::Impl::predict(std::uint32_t ball) {
   }
 
   // Walls listed in this cell.
-  const Ball shape{p, b.radius};
+  const detail::Species& kind = species[b.species];
+  const Ball shape{p, kind.radius};
   for (const std::uint32_t w : grid.walls(cell)) {
     const double horizon = best.time < kInfinity ? best.time - time : kFarFuture;
     const Impact impact = detail::time_of_impact(walls[w], shape, v, horizon);
@@ -279,7 +280,7 @@ void World::Impl::predict(std::uint32_t ball) {
   // (so skipping it changes no bit). The edge cells take the general path. The lambdas are
   // inlined by force: each runs several times a prediction, where a call costs as much as its
   // body.
-  const bool movable = b.movable();
+  const bool movable = kind.movable();
   detail::PairBatch batch;
   const auto consider = [&](std::uint32_t other, double t) CAROM_ALWAYS_INLINE {
     Event candidate;
@@ -322,10 +323,11 @@ void World::Impl::predict(std::uint32_t ball) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == ball) continue;
       const BallSlot& o = balls[other];
-      if (!movable && !o.movable()) continue;  // nothing can respond
+      const detail::Species& other_kind = species[o.species];
+      if (!movable && !other_kind.movable()) continue;  // nothing can respond
       const Vec2 offset = p - position_at(other, time);
       const Vec2 u = v - o.velocity;
-      const double reach = b.radius + o.radius;
+      const double reach = kind.radius + other_kind.radius;
       if constexpr (images == kDirect) {
         batch.push(offset, u, reach, other);
       } else if constexpr (images == kNearest) {
@@ -437,7 +439,7 @@ bool World::Impl::moved_measurably(const Event& contact, double elapsed) const {
     const BallSlot& b = balls[ball];
     // |x| + |y| bounds the length within a factor √2, which is all a threshold needs.
     const double travel = elapsed * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
-    const double size = std::abs(b.position.x) + std::abs(b.position.y) + b.radius;
+    const double size = std::abs(b.position.x) + std::abs(b.position.y) + radius_of(ball);
     return travel > kMeasurableMotion * size;
   };
   return moved(contact.owner) || (contact.kind == EventKind::ball_ball && moved(contact.partner));
@@ -469,7 +471,7 @@ bool World::Impl::process(const Event& event) {
   switch (event.kind) {
     case EventKind::ball_ball: {
       const std::uint32_t j = event.partner;
-      if (!balls[j].alive || balls[j].version != event.partner_version) {
+      if (!balls[j].alive() || balls[j].version != event.partner_version) {
         advance(i, event.time);  // stale: the partner changed course since
         predict(i);
         return false;
@@ -493,7 +495,7 @@ double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t)
     return 1.0;
   }
   if (!mixed_restitution) return def.restitution;
-  return std::min(infos[i].restitution, infos[j].restitution);
+  return std::min(species_of(i).restitution, species_of(j).restitution);
 }
 
 bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) {
@@ -507,8 +509,8 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   bool resolved = false;
   if (approach > 0.0) {
     const double restitution = pair_restitution(i, j, t);
-    const double inverse_a = a.inverse_mass();
-    const double inverse_b = b.inverse_mass();
+    const double inverse_a = species_of(i).inverse_mass();
+    const double inverse_b = species_of(j).inverse_mass();
     const double impulse = (1.0 + restitution) * approach / (inverse_a + inverse_b);
     a.velocity -= normal * (impulse * inverse_a);
     b.velocity += normal * (impulse * inverse_b);
@@ -529,7 +531,6 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
 void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between,
                                    Vec2 normal, double approach, double impulse) {
   const BallSlot& a = balls[i];
-  const BallSlot& b = balls[j];
   const bool a_first = handle_before(i, j);  // the pair in handle order, as the docs promise
   ContactEvent contact;
   contact.time = t;
@@ -537,8 +538,9 @@ void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, V
   contact.a = id_of(a_first ? i : j);
   contact.b = id_of(a_first ? j : i);
   contact.normal = a_first ? normal : -normal;
-  const double reach = a.radius + b.radius;
-  contact.point = a.position + between * (a.radius / reach);
+  const double radius_a = radius_of(i);
+  const double reach = radius_a + radius_of(j);
+  contact.point = a.position + between * (radius_a / reach);
   contact.approach_speed = approach;
   contact.impulse = impulse;
   record(contact);
@@ -549,7 +551,8 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   BallSlot& a = balls[i];
   // The contact's own normal where the query confirms it (touching and approaching now), else
   // the direction to the nearest point (the ball a rounding short of the wall).
-  const Impact now = detail::time_of_impact(walls[wall], {a.position, a.radius}, a.velocity, 0.0);
+  const Impact now =
+      detail::time_of_impact(walls[wall], {a.position, radius_of(i)}, a.velocity, 0.0);
   const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
   const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
   const double approach = dot(a.velocity, normal);
@@ -570,7 +573,7 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
     contact.point = point;
     contact.normal = normal;
     contact.approach_speed = approach;
-    contact.impulse = a.movable() ? speed_change * a.mass : 0.0;
+    contact.impulse = movable(i) ? speed_change * species_of(i).mass : 0.0;
     record(contact);
     resolved = true;
     ++a.version;
@@ -607,7 +610,7 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t) {
   } else if (cx < 0 || cx >= grid.nx() || cy < 0 || cy >= grid.ny()) {
     // An open world's ball leaving the grid: bring everyone to now and grow the grid.
     synchronize(t);
-    rebuild_grid(b.position, b.radius);
+    rebuild_grid(b.position, radius_of(ball));
     predict_all();
     return;
   }

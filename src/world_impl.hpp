@@ -16,6 +16,7 @@
 #include "grid.hpp"
 #include "huge_page_allocator.hpp"
 #include "save_format.hpp"
+#include "species.hpp"
 #include "wall.hpp"
 
 namespace carom {
@@ -27,28 +28,26 @@ namespace detail {
 // the old side. The margin keeps every ball that can touch it within the 3×3 block regardless.
 inline constexpr double kCellMargin = 1e-6;
 
-// A ball slot: what prediction reads of every candidate partner, in one cache line. A ball
-// moves in a straight line between its events, so it is stored at its own local time: its
-// position at any later time t is position + velocity·(t − local_time).
-struct alignas(64) BallSlot {
+inline constexpr std::uint32_t kNoSpecies = 0xFFFFFFFFu;  // a free slot's
+
+// A ball slot: what prediction reads of every candidate partner, 48 bytes (the radius and mass
+// it reads too are its species', species.hpp). A ball moves in a straight line between its
+// events, so it is stored at its own local time: its position at any later time t is
+// position + velocity·(t − local_time).
+struct alignas(16) BallSlot {
   Vec2 position;
   Vec2 velocity;
   double local_time = 0.0;
-  double radius = 0.0;
-  double mass = 0.0;          // kImmovable (+infinity) for an immovable ball
-  std::uint32_t version = 0;  // bumped whenever the trajectory changes
-  bool alive = false;
+  std::uint32_t species = kNoSpecies;  // kNoSpecies while the slot is free
+  std::uint32_t version = 0;           // bumped whenever the trajectory changes
 
-  // 1/mass (+0 for an immovable ball), computed where needed: the same double as storing it,
-  // which would cost 8 bytes a ball.
-  [[nodiscard]] double inverse_mass() const { return 1.0 / mass; }
-  [[nodiscard]] bool movable() const { return mass != kImmovable; }
+  [[nodiscard]] bool alive() const { return species != kNoSpecies; }
 };
+static_assert(sizeof(BallSlot) == 48);
 
-// The rest of a ball, read only by contacts and the API (kept apart so that prediction's
-// scans of neighbours touch one cache line per ball).
+// The rest of a ball, read only by the API (kept apart so that prediction's scans of
+// neighbours touch only the slots).
 struct BallInfo {
-  double restitution = 1.0;
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
 };
@@ -61,7 +60,8 @@ struct World::Impl {
   // neighbours sit near each other in memory (sort_by_cell). A BallId names a handle index,
   // which never moves: handle_of and slot_of_handle map between the two.
   detail::BigVector<detail::BallSlot> balls;
-  detail::BigVector<detail::BallInfo> infos;        // by slot, beside balls
+  detail::BigVector<detail::BallInfo> infos;  // by slot, beside balls
+  detail::SpeciesTable species;
   detail::BigVector<std::uint32_t> handle_of;       // by slot
   detail::BigVector<std::uint32_t> slot_of_handle;  // by handle index
   // By slot, the time of each ball's latest contact: read only by inelastic collapse prevention,
@@ -106,6 +106,11 @@ struct World::Impl {
   }
 
   // ---- geometry ----
+  [[nodiscard]] const detail::Species& species_of(std::uint32_t ball) const {
+    return species[balls[ball].species];
+  }
+  [[nodiscard]] double radius_of(std::uint32_t ball) const { return species_of(ball).radius; }
+  [[nodiscard]] bool movable(std::uint32_t ball) const { return species_of(ball).movable(); }
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
     const detail::BallSlot& b = balls[ball];
     return b.position + b.velocity * (t - b.local_time);
@@ -144,7 +149,7 @@ struct World::Impl {
   // Whether anyone reads a contact's details: the contact list or the stop condition.
   [[nodiscard]] bool contact_wanted() const { return record_contacts || bool(stop_condition); }
   [[nodiscard]] double restitution_of(std::uint32_t ball) const {
-    return mixed_restitution ? infos[ball].restitution : def.restitution;
+    return mixed_restitution ? species_of(ball).restitution : def.restitution;
   }
   void record(const ContactEvent& contact) {
     last_contact = contact;

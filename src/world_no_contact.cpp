@@ -36,9 +36,7 @@ bool never_within(Vec2 s, Vec2 u, double reach) {
 bool World::Impl::no_contact_ever() const {
   // Two balls of which at least one can respond are the only pairs that ever meet; both
   // immovable pass through each other.
-  const auto can_meet = [&](std::uint32_t i, std::uint32_t j) {
-    return balls[i].movable() || balls[j].movable();
-  };
+  const auto can_meet = [&](std::uint32_t i, std::uint32_t j) { return movable(i) || movable(j); };
 
   if (def.boundary == Boundary::periodic) {
     if (!walls.empty()) return false;
@@ -49,14 +47,14 @@ bool World::Impl::no_contact_ever() const {
     // far above the rounding that re-wrapping positions can accumulate).
     const double margin = kApartSlack * std::max(period.x, period.y);
     for (std::uint32_t i = 0; i < balls.size(); ++i) {
-      if (!balls[i].alive) continue;
+      if (!balls[i].alive()) continue;
       const Vec2 pi = position_at(i, time);
       for (std::uint32_t j = i + 1; j < balls.size(); ++j) {
-        if (!balls[j].alive || !can_meet(i, j)) continue;
+        if (!balls[j].alive() || !can_meet(i, j)) continue;
         const Vec2 u = balls[i].velocity - balls[j].velocity;
         if (u == Vec2{}) continue;
         const Vec2 s = minimum_image(pi - position_at(j, time));
-        const double reach = balls[i].radius + balls[j].radius + margin;
+        const double reach = radius_of(i) + radius_of(j) + margin;
         const bool along_x_clear = u.y == 0.0 && std::abs(s.y) > reach;
         const bool along_y_clear = u.x == 0.0 && std::abs(s.x) > reach;
         if (!along_x_clear && !along_y_clear) return false;
@@ -74,13 +72,13 @@ bool World::Impl::no_contact_ever() const {
   // the arc.
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     const detail::BallSlot& a = balls[i];
-    if (!a.alive) continue;
+    if (!a.alive()) continue;
     const Vec2 p = position_at(i, time);
     for (const detail::Wall& wall : walls) {
       if (a.velocity == Vec2{}) break;
       if (wall.is_arc) {
         const Vec2 from_center = p - wall.arc.center;
-        const double clear = (wall.arc.radius + a.radius) * (1.0 + kApartSlack);
+        const double clear = (wall.arc.radius + radius_of(i)) * (1.0 + kApartSlack);
         if (!(length(from_center) > clear) || !moving_apart(from_center, a.velocity)) {
           return false;
         }
@@ -89,8 +87,8 @@ bool World::Impl::no_contact_ever() const {
       }
     }
     for (std::uint32_t j = i + 1; j < balls.size(); ++j) {
-      if (!balls[j].alive || !can_meet(i, j)) continue;
-      const double reach = a.radius + balls[j].radius;
+      if (!balls[j].alive() || !can_meet(i, j)) continue;
+      const double reach = radius_of(i) + radius_of(j);
       if (!never_within(p - position_at(j, time), a.velocity - balls[j].velocity, reach)) {
         return false;
       }

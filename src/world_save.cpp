@@ -144,15 +144,17 @@ std::string World::Impl::save_payload() const {
   for (const std::uint32_t i : slot_of_handle) {
     const detail::BallSlot& b = balls[i];
     const detail::BallInfo& info = infos[i];
-    out.u8(b.alive ? 1 : 0);
+    // A free slot keeps no species: its kind is written as zeros (load ignores it).
+    const detail::Species kind = b.alive() ? species_of(i) : detail::Species{0.0, 0.0, 0.0, 0};
+    out.u8(b.alive() ? 1 : 0);
     out.vec2(b.position);
     out.vec2(b.velocity);
     out.f64(b.local_time);
-    out.f64(b.radius);
-    out.f64(b.inverse_mass());
+    out.f64(kind.radius);
+    out.f64(b.alive() ? kind.inverse_mass() : 0.0);
     out.u32(b.version);
-    out.f64(b.mass);
-    out.f64(info.restitution);
+    out.f64(kind.mass);
+    out.f64(kind.restitution);
     out.u64(info.user_data);
     out.u32(info.generation);
     if (def.collapse_time > 0.0) out.f64(last_contact_times[i]);
@@ -166,7 +168,7 @@ std::string World::Impl::save_payload() const {
     out.i32(grid.nx());
     out.i32(grid.ny());
     for (const std::uint32_t i : slot_of_handle) {
-      out.i32(balls[i].alive ? grid.cell_of_ball(i) : -1);
+      out.i32(balls[i].alive() ? grid.cell_of_ball(i) : -1);
     }
     // The balls in the order of the cells' lists, so that load rebuilds every list in the same
     // order (prediction's result does not depend on it, but the engine's path then is the same).
@@ -250,7 +252,7 @@ void World::Impl::load_payload(ByteReader& in) {
   }
 
   const std::uint32_t wall_count = in.u32("wall count");
-  if (wall_count > in.remaining()) {
+  if (wall_count > in.remaining() || wall_count > detail::EventQueue::kMaxWalls) {
     in.inconsistent("wall count", std::to_string(wall_count), "more than the bytes that follow");
   }
   if (def.boundary == Boundary::periodic && wall_count != 0) {
@@ -302,35 +304,35 @@ void World::Impl::load_payload(ByteReader& in) {
   for (std::uint32_t i = 0; i < slots; ++i) {
     detail::BallSlot& b = balls[i];
     detail::BallInfo& info = infos[i];
-    b.alive = in.u8("ball alive") != 0;
+    const bool alive = in.u8("ball alive") != 0;
     b.position = in.vec2("ball position");
     b.velocity = in.vec2("ball velocity");
     b.local_time = in.f64("ball local time");
-    b.radius = in.f64("ball radius");
+    const double radius = in.f64("ball radius");
     const double inverse_mass = in.f64("ball inverse mass");
     b.version = in.u32("ball version");
-    b.mass = in.f64("ball mass");
-    info.restitution = in.f64("ball restitution");
-    if (info.restitution != def.restitution) mixed_restitution = true;
+    const double mass = in.f64("ball mass");
+    const double restitution = in.f64("ball restitution");
     info.user_data = in.u64("ball user data");
     info.generation = in.u32("ball generation");
     if (tc) last_contact_times[i] = in.f64("ball last contact time");
     const std::string which = "ball slot " + std::to_string(i);
     if (info.generation == 0) in.inconsistent(which, "generation 0", "0 is the null handle's");
-    if (!b.alive) continue;
+    if (!alive) continue;
     ++live_count;
-    largest_alive = std::max(largest_alive, b.radius);
-    const bool immovable = b.mass == kImmovable;
+    largest_alive = std::max(largest_alive, radius);
+    const bool immovable = mass == kImmovable;
     if (!finite(b.position) || !finite(b.velocity) || !(b.local_time <= time) ||
-        !std::isfinite(b.local_time) || !(b.radius > 0.0 && std::isfinite(b.radius)) ||
+        !std::isfinite(b.local_time) || !(radius > 0.0 && std::isfinite(radius)) ||
         !(immovable ? inverse_mass == 0.0
-                    : b.mass > 0.0 && std::isfinite(b.mass) && inverse_mass == 1.0 / b.mass) ||
-        !(info.restitution >= 0.0 && info.restitution <= 1.0) ||
-        (tc && std::isnan(last_contact_times[i]))) {
+                    : mass > 0.0 && std::isfinite(mass) && inverse_mass == 1.0 / mass) ||
+        !(restitution >= 0.0 && restitution <= 1.0) || (tc && std::isnan(last_contact_times[i]))) {
       in.inconsistent(which, "position " + vector_text(b.position),
                       "a live ball has finite motion no later than the world's time, a positive "
                       "radius, a valid mass and restitution");
     }
+    b.species = species.acquire(radius, mass, restitution);
+    if (restitution != def.restitution) mixed_restitution = true;
   }
   if (!(largest_radius >= largest_alive && std::isfinite(largest_radius))) {
     in.inconsistent("largest radius", number_text(largest_radius),
@@ -344,7 +346,7 @@ void World::Impl::load_payload(ByteReader& in) {
   std::vector<bool> listed(slots, false);
   for (std::uint32_t k = 0; k < free_count; ++k) {
     const std::uint32_t slot = in.u32("free slot");
-    if (slot >= slots || balls[slot].alive || listed[slot]) {
+    if (slot >= slots || balls[slot].alive() || listed[slot]) {
       in.inconsistent("free slot", std::to_string(slot), "must name each dead slot once");
     }
     listed[slot] = true;
@@ -406,7 +408,7 @@ void World::Impl::load_grid(ByteReader& in) {
   std::vector<std::int32_t> cell_of(slots);
   for (std::uint32_t i = 0; i < slots; ++i) {
     cell_of[i] = in.i32("ball cell");
-    const bool fits = balls[i].alive ? cell_of[i] >= 0 && cell_of[i] < cells : cell_of[i] == -1;
+    const bool fits = balls[i].alive() ? cell_of[i] >= 0 && cell_of[i] < cells : cell_of[i] == -1;
     if (!fits) {
       in.inconsistent("cell of ball slot " + std::to_string(i), std::to_string(cell_of[i]),
                       "a live ball lies in a grid cell, a dead one in none");
@@ -418,7 +420,7 @@ void World::Impl::load_grid(ByteReader& in) {
   for (std::size_t k = 0; k < live_count; ++k) {
     order[k] = in.u32("grid order");
     const std::uint32_t ball = order[k];
-    if (ball >= slots || !balls[ball].alive || seen[ball] ||
+    if (ball >= slots || !balls[ball].alive() || seen[ball] ||
         (k > 0 && cell_of[ball] < cell_of[order[k - 1]])) {
       in.inconsistent("grid order", std::to_string(ball), "must list each live ball once, by cell");
     }

@@ -873,3 +873,49 @@ TEST(WorldApi, ContactRecordingOffKeepsNoContactsAndChangesNothingElse) {
 
 }  // namespace
 }  // namespace carom
+
+namespace carom {
+namespace {
+
+// Balls of one kind share a species record (src/species.hpp), reused once its last ball is gone:
+// each ball must keep its own radius, mass and restitution through removals and re-adds.
+TEST(WorldApi, BallsKeepTheirKindAcrossRemovalsAndReuse) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {100.0, 100.0};
+  World world(def);
+  struct Kind {
+    double radius;
+    double mass;
+    double restitution;
+  };
+  const Kind kinds[] = {{0.5, 1.0, 1.0}, {1.0, kImmovable, 1.0}, {0.75, 3.0, 0.5}};
+  std::vector<std::pair<BallId, Kind>> placed;
+  const auto add_kind = [&](int slot, const Kind& kind) {
+    BallDef ball;
+    ball.position = {5.0 + 4.0 * (slot % 20), 5.0 + 4.0 * (slot / 20)};
+    ball.radius = kind.radius;
+    ball.mass = kind.mass;
+    ball.restitution = kind.restitution;
+    placed.emplace_back(world.add_ball(ball), kind);
+  };
+  for (int i = 0; i < 30; ++i) add_kind(i, kinds[i % 3]);
+  for (int i = 0; i < 30; i += 3) world.remove_ball(placed[static_cast<std::size_t>(i)].first);
+  // Every ball of the first kind is gone; new kinds take the freed places.
+  for (int i = 0; i < 30; i += 3) add_kind(i, {0.25 + 0.01 * i, 2.0 + i, 0.0});
+  for (const auto& [id, kind] : placed) {
+    if (!world.contains(id)) continue;
+    EXPECT_EQ(world.radius(id), kind.radius);
+    EXPECT_EQ(world.mass(id), kind.mass);
+  }
+  // Restitution is seen through a bounce: the kind {0.75, 3, 0.5} against the wall at speed 1.
+  const BallId bouncer = placed[2].first;
+  world.set_position(bouncer, {99.0 - 0.75, 5.0});
+  world.set_velocity(bouncer, {1.0, 0.0});
+  world.step(1.0);
+  EXPECT_EQ(world.velocity(bouncer), (Vec2{-0.5, 0.0}));
+}
+
+}  // namespace
+}  // namespace carom

@@ -4,15 +4,14 @@
 // the compiler can run the pairs through SIMD lanes, and the CPU never guesses wrong about which
 // pairs approach (about half, at random: a mispredicted branch costs as much as a pair's
 // arithmetic). Pairs outside exact_range.hpp's window are flagged for the scalar, rescaled path.
+// The loop is in pair_batch.cpp, compiled for the widest vectors the machine has.
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
 #include "carom/vec2.hpp"
-#include "exact_range.hpp"
 
 namespace carom::detail {
 
@@ -46,37 +45,8 @@ struct PairBatch {
 
   // entry_crossing_in_range for every pair, with the horizon at +infinity's largest finite
   // stand-in (the world's kFarFuture); pairs whose magnitudes leave the exact range get
-  // kRescale, whatever the arithmetic here gave.
-  void solve(double horizon) {
-    for (std::size_t k = 0; k < count; ++k) {
-      // The lane's values first, so that every test below is on plain locals.
-      const double s_x = sx[k];
-      const double s_y = sy[k];
-      const double u_x = ux[k];
-      const double u_y = uy[k];
-      const double r = reach[k];
-      const double b = s_x * u_x + s_y * u_y;  // dot(s, u)
-      const double ss = s_x * s_x + s_y * s_y;
-      const double uu = u_x * u_x + u_y * u_y;
-      const double rr = r * r;
-      const double c = ss - rr;
-      const double h = s_x * u_y - s_y * u_x;  // cross(s, u)
-      const double discriminant = uu * rr - h * h;
-      const double hit_time = c / (std::sqrt(discriminant) - b);
-      // vector_in_range and square_in_range, on the squares already formed; & and | rather than
-      // && and || so that nothing branches.
-      const bool s_zero = (s_x == 0.0) & (s_y == 0.0);
-      const bool u_zero = (u_x == 0.0) & (u_y == 0.0);
-      const bool s_in = ((ss >= kSquareLow) & (ss <= kSquareHigh)) | s_zero;
-      const bool u_in = ((uu >= kSquareLow) & (uu <= kSquareHigh)) | u_zero;
-      const bool in_range = s_in & u_in & (rr >= kSquareLow) & (rr <= kSquareHigh);
-      const bool inside = c <= 0.0;  // already touching and moving inwards: t = 0
-      const bool hit = (b < 0.0) & (inside | ((discriminant > 0.0) & (hit_time <= horizon)));
-      t[k] = inside ? 0.0 : hit_time;
-      // kMiss 0, kHit 1, kRescale 2, as arithmetic rather than branches.
-      outcome[k] = static_cast<std::uint8_t>(in_range ? static_cast<int>(hit) : 2);
-    }
-  }
+  // kRescale, whatever the arithmetic here gave. Vectorised (pair_batch.cpp).
+  void solve(double horizon);
 };
 
 }  // namespace carom::detail

@@ -12,14 +12,19 @@
 
 namespace carom::detail {
 
-CAROM_VECTOR_CLONES void PairBatch::solve(double horizon) {
+namespace {
+
+// The loop itself, with internal linkage: clang 14 defines a cloned function only under its
+// ifunc's own symbol, so an external one (PairBatch::solve) would not link.
+CAROM_VECTOR_CLONES void solve_pairs(PairBatch& batch, double horizon) {
+  const std::size_t count = batch.count;
   for (std::size_t k = 0; k < count; ++k) {
     // The lane's values first, so that every test below is on plain locals.
-    const double s_x = sx[k];
-    const double s_y = sy[k];
-    const double u_x = ux[k];
-    const double u_y = uy[k];
-    const double r = reach[k];
+    const double s_x = batch.sx[k];
+    const double s_y = batch.sy[k];
+    const double u_x = batch.ux[k];
+    const double u_y = batch.uy[k];
+    const double r = batch.reach[k];
     const double b = s_x * u_x + s_y * u_y;  // dot(s, u)
     const double ss = s_x * s_x + s_y * s_y;
     const double uu = u_x * u_x + u_y * u_y;
@@ -37,10 +42,14 @@ CAROM_VECTOR_CLONES void PairBatch::solve(double horizon) {
     const bool in_range = s_in & u_in & (rr >= kSquareLow) & (rr <= kSquareHigh);
     const bool inside = c <= 0.0;  // already touching and moving inwards: t = 0
     const bool hit = (b < 0.0) & (inside | ((discriminant > 0.0) & (hit_time <= horizon)));
-    t[k] = inside ? 0.0 : hit_time;
+    batch.t[k] = inside ? 0.0 : hit_time;
     // kMiss 0, kHit 1, kRescale 2, as arithmetic rather than branches.
-    outcome[k] = static_cast<std::uint8_t>(in_range ? static_cast<int>(hit) : 2);
+    batch.outcome[k] = static_cast<std::uint8_t>(in_range ? static_cast<int>(hit) : 2);
   }
 }
+
+}  // namespace
+
+void PairBatch::solve(double horizon) { solve_pairs(*this, horizon); }
 
 }  // namespace carom::detail

@@ -4,7 +4,7 @@
 // the compiler can run the pairs through SIMD lanes, and the CPU never guesses wrong about which
 // pairs approach (about half, at random: a mispredicted branch costs as much as a pair's
 // arithmetic). Pairs outside exact_range.hpp's window are flagged for the scalar, rescaled path.
-// The loop is in pair_batch.cpp, compiled for the widest vectors the machine has.
+// Solved four pairs a vector operation on CPUs with AVX2 (pair_batch.cpp).
 #pragma once
 
 #include <array>
@@ -45,8 +45,10 @@ struct PairBatch {
 
   // entry_crossing_in_range for every pair, with the horizon at +infinity's largest finite
   // stand-in (the world's kFarFuture); pairs whose magnitudes leave the exact range get
-  // kRescale, whatever the arithmetic here gave. Vectorised (pair_batch.cpp).
+  // kRescale, whatever the arithmetic here gave. With AVX2 four at a time (pair_batch.cpp).
   void solve(double horizon);
+  // The same, one pair at a time whatever the CPU (what solve does without AVX2; for tests).
+  void solve_one_by_one(double horizon);
 };
 
 }  // namespace carom::detail

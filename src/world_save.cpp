@@ -252,8 +252,11 @@ void World::Impl::load_payload(ByteReader& in) {
   }
 
   const std::uint32_t wall_count = in.u32("wall count");
-  if (wall_count > in.remaining() || wall_count > detail::EventQueue::kMaxWalls) {
+  if (wall_count > in.remaining()) {
     in.inconsistent("wall count", std::to_string(wall_count), "more than the bytes that follow");
+  }
+  if (wall_count > detail::EventQueue::kMaxWalls) {
+    in.inconsistent("wall count", std::to_string(wall_count), "more than a world holds (2^30)");
   }
   if (def.boundary == Boundary::periodic && wall_count != 0) {
     in.inconsistent("wall count", std::to_string(wall_count), "a periodic world has no walls");

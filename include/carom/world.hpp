@@ -196,10 +196,10 @@ class World {
 
   // ---- saving and resuming (format: docs/world.md, "Saving and resuming") ----
   // save writes everything that decides the world's future: every slot (live or free) with its
-  // generation, local time, motion, radius, mass, restitution, user data and (with collapse_time
-  // > 0) last contact time; the free-slot order; walls; the WorldDef; time; collision count;
-  // contact recording; the broad-phase grid and every ball's pending predicted event. A world
-  // loaded from it and given the same calls as the original gives bit-identical contacts and
+  // generation, local time, motion, user data, (live) radius, mass, restitution and (with
+  // collapse_time > 0) last contact time; the free-slot order; walls; the WorldDef; time; collision
+  // count; contact recording; the broad-phase grid and every ball's pending predicted event. A
+  // world loaded from it and given the same calls as the original gives bit-identical contacts and
   // states (on the same build), whether saved between steps, between run_collisions calls, or
   // after a stop condition ended a run early. Not saved: the stop condition (a function: set it
   // again after load), the last run's contacts() and stopped_early() (results of a call, not

@@ -19,7 +19,7 @@ struct PairBatch {
   static constexpr std::size_t kCapacity = 32;
   enum Outcome : std::uint8_t { kMiss = 0, kHit = 1, kRescale = 2 };
 
-  std::size_t count = 0;
+  // (The cache-line-aligned arrays first, the small ones after: no padding between them.)
   // Pair k: the offset s (this ball minus the neighbour), the relative velocity u and the sum of
   // the radii; the neighbour's slot.
   alignas(64) std::array<double, kCapacity> sx;
@@ -27,10 +27,11 @@ struct PairBatch {
   alignas(64) std::array<double, kCapacity> ux;
   alignas(64) std::array<double, kCapacity> uy;
   alignas(64) std::array<double, kCapacity> reach;
-  std::array<std::uint32_t, kCapacity> other;
   // Filled by solve(): the time from now of each hit, and what became of each pair.
   alignas(64) std::array<double, kCapacity> t;
+  std::array<std::uint32_t, kCapacity> other;
   std::array<std::uint8_t, kCapacity> outcome;
+  std::size_t count = 0;
 
   void push(Vec2 s, Vec2 u, double radius_sum, std::uint32_t neighbour) {
     sx[count] = s.x;

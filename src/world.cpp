@@ -422,24 +422,42 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
     const Vec2 move =
         periodic ? w.minimum_image(w.wrap_into_cell(position) - from) : position - from;
     const int images = periodic ? 1 : 0;
+    const double radius = w.radius_of(slot);
+    const Ball moving{from, radius};
+    // The first touch, and where the ball then is, taken from the obstacle's side (a radius
+    // back from its centre or its nearest point): from + move·fraction carries the rounding of
+    // the move's length, which for a long drag (10⁸) is an overlap far beyond the rounding of
+    // the stop point's own coordinates.
     double fraction = 1.0;
-    const Ball moving{from, w.radius_of(slot)};
+    Vec2 stop = from + move;
+    const auto keep_first = [&](const Impact& hit, Vec2 touching) {
+      if (!hit.hit || !(hit.t < fraction)) return;
+      fraction = hit.t;
+      stop = hit.t > 0.0 ? touching : from;
+    };
     for (std::uint32_t j = 0; j < w.balls.size(); ++j) {
       if (j == slot || !w.balls[j].alive()) continue;
       const Vec2 nearest = from + w.minimum_image(w.position_at(j, w.time) - from);
+      const double reach = radius + w.radius_of(j);
       for (int kx = -images; kx <= images; ++kx) {
         for (int ky = -images; ky <= images; ++ky) {
           const Vec2 other = nearest + Vec2{kx * w.period.x, ky * w.period.y};
           const Impact hit = sweep_ball_ball(moving, move, {other, w.radius_of(j)});
-          if (hit.hit) fraction = std::min(fraction, hit.t);
+          keep_first(hit, other - hit.normal * reach);
         }
       }
     }
     for (const detail::Wall& wall : w.walls) {
       const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
-      if (hit.hit) fraction = std::min(fraction, hit.t);
+      if (!hit.hit) continue;
+      // The contact point the query reports is the centre plus the normal times the radius; the
+      // wall's own nearest point to that centre lies on the wall to the rounding of its
+      // coordinates.
+      const Vec2 on_wall = detail::nearest_point(wall, hit.a_at);
+      const Vec2 gap = on_wall - hit.a_at;
+      keep_first(hit, on_wall - (gap == Vec2{} ? hit.normal : normalized(gap)) * radius);
     }
-    target = from + move * fraction;
+    target = stop;
   }
   target = w.wrap_into_cell(target);
   w.ensure_grid(target, w.radius_of(slot));

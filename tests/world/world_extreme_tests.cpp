@@ -477,6 +477,30 @@ TEST(WorldFuzzFound, BallDraggedAgainstTheOutsideOfAnArcStaysThere) {
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
 
+// Found by the world fuzzer: a ball 10⁸ away dragged with nearest_free into a slanted segment
+// overlapped it by 10⁻⁸ (the audit allows 10⁻⁹ of the radius plus the rounding of the position,
+// 10⁻¹⁴ here): the stop point from + move·fraction carried the rounding of the move's length.
+// It is now taken a radius back from the obstacle's nearest point (or centre). The same for a
+// ball and an arc; about a quarter of these drags overlapped before.
+TEST(WorldFuzzFound, LongDragStopsTouchingRatherThanOverlapping) {
+  for (int i = 0; i < 60; ++i) {
+    World world;
+    world.add_segment(
+        {{16.095216296635385, 16.117189288166628}, {0.0012207217517357137, 14.376440070191501}});
+    world.add_ball(extreme_ball({30.0, 0.0}, {}, 1.0, 1.0));
+    world.add_arc({{0.0, 30.0}, 2.0, 0.0, 6.0});
+    const Vec2 far{-1.3e8 + i * 12345.5, -0.7e8 - i * 7777.7};
+    const Vec2 targets[] = {{13.725490196078432, 13.725490196078432}, {30.0, 0.5}, {0.5, 30.0}};
+    for (const Vec2 target : targets) {
+      const BallId dragged = world.add_ball(extreme_ball(far, {}, 3.0, 1.0));
+      const Vec2 placed = world.set_position(dragged, target, Placement::nearest_free);
+      EXPECT_GT(length(placed - target), 0.1) << "the drag to " << target.x << " should stop short";
+      EXPECT_FALSE(world.audit().has_value()) << "drag " << i << ": " << *world.audit();
+      world.remove_ball(dragged);
+    }
+  }
+}
+
 // Found by the world fuzzer (a timeout in CI): a ball of radius 3 in the top-right corner of a
 // box, touching both walls, with an immovable ball dragged against it from the lower left, is
 // wedged: every way it can move is blocked. Its contacts did not come at one instant (which the

@@ -30,6 +30,8 @@ constexpr double kFarFuture = std::numeric_limits<double>::max();
 // An open world's grid covers the balls and walls with this much room on each side (as a
 // fraction of their extent), so that it is rebuilt only every so often as balls spread out.
 constexpr double kOpenGrowth = 0.5;
+// ... and at least this fraction of the coordinates' size (far above their rounding, 2⁻⁵²).
+constexpr double kRoomOfScale = 0x1p-40;
 // At most this many cells per ball (plus a floor), so that a ball far away makes cells larger
 // rather than the grid huge.
 constexpr double kCellsPerBall = 4.0;
@@ -128,7 +130,13 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   const std::size_t ball_total = live_count + 1;
   if (def.boundary == Boundary::open) {
     const double cell = wanted_cell_size(upper.x - lower.x, upper.y - lower.y, ball_total, largest);
-    const double room = kOpenGrowth * std::max(upper.x - lower.x, upper.y - lower.y) + 2.0 * cell;
+    // At least kRoomOfScale of the coordinates' size: far from the origin, room below their
+    // rounding would leave an extent of 0 (cells of size 0).
+    const double scale =
+        std::max({std::abs(lower.x), std::abs(lower.y), std::abs(upper.x), std::abs(upper.y)});
+    const double room =
+        std::max(kOpenGrowth * std::max(upper.x - lower.x, upper.y - lower.y) + 2.0 * cell,
+                 kRoomOfScale * scale);
     lower -= Vec2{room, room};
     upper += Vec2{room, room};
   } else {

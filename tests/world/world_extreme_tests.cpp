@@ -501,6 +501,22 @@ TEST(WorldFuzzFound, LongDragStopsTouchingRatherThanOverlapping) {
   }
 }
 
+// Found by the world fuzzer (UBSan: NaN converted to int in the grid): a lone ball of radius
+// 0.01 in an open world, flown out to 5·10¹⁸ (the world's time at 2.6·10¹⁸). The grid re-planned
+// around it with a margin of two cells, 0.04, below the rounding of such coordinates (1024):
+// an extent of 0, cells of size 0, and a NaN cell index. The margin now has a floor of 2⁻⁴⁰ of
+// the coordinates' size.
+TEST(WorldFuzzFound, LoneSmallBallFarFromTheOriginKeepsAGridOfPositiveCells) {
+  World world;
+  const BallId ball = world.add_ball(
+      extreme_ball({-5.6593699546187878e+18, -4.3167285113006223e+18}, {-7.95, -6.06}, 0.01, 2.0));
+  world.step(1e6);  // many cell crossings, each leaving the grid and re-planning it
+  EXPECT_EQ(world.time(), 1e6);
+  EXPECT_TRUE(std::isfinite(world.position(ball).x) && std::isfinite(world.position(ball).y));
+  EXPECT_LT(world.position(ball).x, -5.6593699546187878e+18);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
 // Found by the world fuzzer (a timeout in CI): a ball of radius 3 in the top-right corner of a
 // box, touching both walls, with an immovable ball dragged against it from the lower left, is
 // wedged: every way it can move is blocked. Its contacts did not come at one instant (which the

@@ -32,6 +32,28 @@ BallDef extreme_ball(Vec2 position, Vec2 velocity, double radius = 0.5, double m
   return def;
 }
 
+// A box world [0, side]².
+World extreme_box(double side) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {0.0, 0.0};
+  def.upper = {side, side};
+  return World(def);
+}
+
+// Steps the world by dt, which must be refused with carom::InvalidArgument from World::step
+// naming `why` ("jammed", "stalled"), the world left valid.
+void expect_endless_step_refused(World& world, double dt, const std::string& why) {
+  try {
+    world.step(dt);
+    ADD_FAILURE() << "a run that never ends returned at t = " << world.time();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.function(), "World::step");
+    EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
 double extreme_momentum_scale(const World& world) {
   double sum = 0.0;
   for (const BallId id : world.balls()) sum += world.mass(id) * length(world.velocity(id));
@@ -45,11 +67,7 @@ constexpr double kMillionDiametersPerStep = 1e6;  // diameter 1, step 1
 TEST(WorldExtreme, MillionDiametersPerStepBetweenTwoWalls) {
   // A ball of diameter 1 in a box 10 wide crosses the 9 units its centre can travel 111 111
   // times in one step: every wall contact is made, and it ends where the unfolded path says.
-  WorldDef def;
-  def.boundary = Boundary::box;
-  def.lower = {0.0, 0.0};
-  def.upper = {10.0, 10.0};
-  World world(def);
+  World world = extreme_box(10.0);
   const BallId ball = world.add_ball(extreme_ball({5.0, 5.0}, {kMillionDiametersPerStep, 0.0}));
   world.step(1.0);
   // The centre moves in [0.5, 9.5]; unfolded it travels 4.5 + 10⁶ from the left end, and the
@@ -209,15 +227,8 @@ TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
   for (int i = 0; i < 4; ++i) {
     world.add_ball(extreme_ball({i + 0.5, 2.0}, {i == 0 ? 1.0 : 0.0, 0.0}));
   }
-  try {
-    world.step(1.0);
-    ADD_FAILURE() << "a jammed ring stepped to t = " << world.time();
-  } catch (const InvalidArgument& e) {
-    EXPECT_EQ(e.function(), "World::step");
-    EXPECT_NE(std::string(e.what()).find("jammed"), std::string::npos) << e.what();
-  }
+  expect_endless_step_refused(world, 1.0, "jammed");  // refused, not corrupted
   EXPECT_EQ(world.time(), 0.0);
-  EXPECT_FALSE(world.audit().has_value()) << *world.audit();  // refused, not corrupted
 }
 
 // A ball touching the inside of a full circle and moving along it (normal speed 0) leaves the
@@ -316,11 +327,7 @@ TEST(WorldFuzzFound, EmptyOpenWorldSavesAndLoads) {
 // event times are rounded to 10⁻⁵ (|v|·ulp(t) = 10⁻¹⁴ in position). The audit reported "reaches
 // outside the box"; it now allows the rounding of positions as well as 10⁻⁹ of the radius.
 TEST(WorldFuzzFound, TinySlowBallBetweenBoxWallsPassesTheAudit) {
-  WorldDef def;
-  def.boundary = Boundary::box;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  World world(def);
+  World world = extreme_box(20.0);
   const BallId ball =
       world.add_ball(extreme_ball({8.8432135500114448, 8.8523689631494626},
                                   {-9.9990667325760514e-10, -1.3661799841489198e-11}, 1e-6, 3.0));
@@ -523,22 +530,12 @@ TEST(WorldFuzzFound, LoneSmallBallFarFromTheOriginKeepsAGridOfPositiveCells) {
 // jam rule counted) but a rounding apart, time creeping by ulps, so step(4.5) would have taken
 // about 10^17 contacts. Contacts that move no ball measurably now count as one instant's.
 TEST(WorldFuzzFound, BallWedgedInACornerIsRefusedNotHung) {
-  WorldDef def;
-  def.boundary = Boundary::box;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  World world(def);
+  World world = extreme_box(20.0);
   world.add_ball(extreme_ball({17.0, 17.0}, {7.0, 0.0}, 3.0, 1.0));
   const BallId wedge = world.add_ball(extreme_ball({3.9, 4.0}, {}, 0.1, kImmovable));
   world.set_position(wedge, {20.0, 20.0}, Placement::nearest_free);  // stops touching the ball
-  try {
-    world.step(4.5);
-    ADD_FAILURE() << "a wedged ball stepped to t = " << world.time();
-  } catch (const InvalidArgument& e) {
-    EXPECT_NE(std::string(e.what()).find("jammed"), std::string::npos) << e.what();
-  }
+  expect_endless_step_refused(world, 4.5, "jammed");
   EXPECT_LT(world.time(), 1e-6);  // refused near where it jammed
-  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
 
 // Found by the world fuzzer (a timeout): at t = 10^24 neighbouring doubles are 1.3·10^8 apart, so
@@ -547,22 +544,11 @@ TEST(WorldFuzzFound, BallWedgedInACornerIsRefusedNotHung) {
 // Events at one instant past the jam limit are now refused, and named a stall when the step to
 // the next double would move the ball measurably.
 TEST(WorldFuzzFound, TimeTooLargeToAdvanceIsRefusedAsAStall) {
-  WorldDef def;
-  def.boundary = Boundary::box;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  World world(def);
+  World world = extreme_box(20.0);
   world.run_until(1e24);
   world.add_ball(extreme_ball({10.0, 10.0}, {1.0, 0.0}));
-  try {
-    world.step(1.0);
-    ADD_FAILURE() << "a stalled world stepped to t = " << world.time();
-  } catch (const InvalidArgument& e) {
-    EXPECT_EQ(e.function(), "World::step");
-    EXPECT_NE(std::string(e.what()).find("stalled"), std::string::npos) << e.what();
-  }
+  expect_endless_step_refused(world, 1.0, "stalled");
   EXPECT_EQ(world.time(), 1e24);
-  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
 
 // ---- periodic cells only a few grid cells wide ------------------------------------------------

@@ -66,6 +66,12 @@ constexpr std::uint64_t kInstantEventsFloor = 1 << 16;
 // coordinates' size (|x| + |y| + radius) since the last one that did: a jammed ball creeps a
 // rounding at a time, so its contacts advance time by ulps rather than not at all.
 constexpr double kMeasurableMotion = 0x1p-30;
+// A contact is refused (time "has stalled") where one step of the double grid of time moves one
+// of its balls by more than this fraction of its radius: contacts are resolved at event times
+// rounded to that grid, so they would land that far off their places (and overlaps of that
+// size are beyond what World::audit allows for the rounding of positions). Speed 1 and radius 1
+// reach it at t ≈ 4·10¹²; a ball of radius 10⁻⁶ at speed 100 at t ≈ 3·10⁴.
+constexpr double kResolvableMotion = 0x1p-10;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
@@ -423,6 +429,7 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     without_contact = 0;
     ++resolved;
     ++collisions;
+    if (time_too_coarse(event)) refuse_stalled(function, event);
     if (moved_measurably(event, time - motion_time)) {
       motion_time = time;
       contacts_without_motion = 0;
@@ -453,25 +460,39 @@ bool World::Impl::moved_measurably(const Event& contact, double elapsed) const {
   return moved(contact.owner) || (contact.kind == EventKind::ball_ball && moved(contact.partner));
 }
 
+bool World::Impl::time_too_coarse(const Event& contact) const {
+  // Neighbouring doubles near t are at most t·2⁻⁵² apart.
+  const double time_step = std::abs(time) * 0x1p-52;
+  const auto coarse = [&](std::uint32_t ball) {
+    const BallSlot& b = balls[ball];
+    const double motion = time_step * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
+    return motion > kResolvableMotion * radius_of(ball);
+  };
+  return coarse(contact.owner) || (contact.kind == EventKind::ball_ball && coarse(contact.partner));
+}
+
 void World::Impl::refuse_endless(const char* function, std::uint64_t count,
                                  const Event& last) const {
-  const std::string what = std::to_string(count) + " events at t = " + detail::number_text(time);
   // Time stalls where its step to the next double would move the event's ball measurably: the
   // motion between events is then lost to rounding. Otherwise the balls are jammed.
   const double time_step = std::nextafter(time, kInfinity) - time;
-  if (moved_measurably(last, time_step)) {
-    throw InvalidArgument(
-        function, "world", what,
-        "has stalled: at this time the step between neighbouring doubles is longer than the "
-        "motion to the next event, so events no longer advance time; continue the motion in a "
-        "new world, from time 0 (docs/world.md, \"Known limits\")");
-  }
+  if (moved_measurably(last, time_step)) refuse_stalled(function, last);
   throw InvalidArgument(
-      function, "world", what,
+      function, "world", std::to_string(count) + " events at t = " + detail::number_text(time),
       "has balls jammed: balls held by touching balls and walls on every side (a closed row of "
       "exactly touching balls around the periodic cell or from wall to wall, a ball wedged in a "
       "corner) pass their contacts on without moving, for ever; leave a gap (docs/world.md, "
       "\"Known limits\")");
+}
+
+void World::Impl::refuse_stalled(const char* function, const Event& last) const {
+  throw InvalidArgument(
+      function, "world",
+      "t = " + detail::number_text(time) + " (ball " + std::to_string(handle_of[last.owner]) + ")",
+      "has stalled: at this time the step between neighbouring doubles moves a ball measurably "
+      "(more than 2^-10 of its radius), so contacts would be resolved off their places, and "
+      "events may no longer advance time at all; continue the motion in a new world, from time "
+      "0 (docs/world.md, \"Known limits\")");
 }
 
 bool World::Impl::process(const Event& event) {

@@ -551,6 +551,28 @@ TEST(WorldFuzzFound, TimeTooLargeToAdvanceIsRefusedAsAStall) {
   EXPECT_EQ(world.time(), 1e24);
 }
 
+// Found by the world fuzzer: at t = 1.6·10²² (run_collisions with a far time limit) a ball of
+// radius 2 ended 0.59 deep in a wall, its wall contact resolved at an event time rounded to the
+// double grid of t, 2·10⁶ apart. A contact where one step of that grid moves a ball by more than
+// 2⁻¹⁰ of its radius is now refused as a stall. At t = 10¹³ the grid is 0.002 apart: a ball of
+// radius 0.5 at speed 1 would meet the walls 0.002 off.
+TEST(WorldFuzzFound, ContactsWhereTimeIsTooCoarseAreRefusedAsAStall) {
+  World world = extreme_box(20.0);
+  world.run_until(1e13);
+  world.add_ball(extreme_ball({10.0, 10.0}, {1.0, 0.0}));
+  expect_endless_step_refused(world, 100.0, "stalled");
+  EXPECT_LT(world.time(), 1e13 + 100.0);
+}
+
+// The same stall without contacts: in an open world at t = 10²⁴ a lone ball's cell crossings
+// round to the present instant and never end.
+TEST(WorldFuzzFound, CrossingsWhereTimeNoLongerAdvancesAreRefusedAsAStall) {
+  World world;
+  world.run_until(1e24);
+  world.add_ball(extreme_ball({0.0, 0.0}, {1.0, 0.5}));
+  expect_endless_step_refused(world, 1.0, "stalled");
+}
+
 // ---- periodic cells only a few grid cells wide ------------------------------------------------
 // A pair can meet through another image than the one nearest when it was predicted, before
 // either ball leaves its cell (docs/world.md, "Boundaries"). Found by the world fuzzer.

@@ -139,7 +139,10 @@ fuzz-toi: fuzz-toi-build
 # The World driven by random API calls (tests/fuzz/world_fuzz.cpp), from the committed seeds in
 # tests/fuzz/corpus/world. Each smoke run's length is a variable, so CI time can be tuned.
 WORLD_FUZZ := build/fuzz/tests/fuzz/carom_world_fuzz
-WORLD_FUZZ_SMOKE_SECONDS ?= 15
+# The smoke run is a fixed number of inputs (about 15 s on CI's machine), so that it tries the
+# same ones everywhere, however fast the machine; the time is only a cap.
+WORLD_FUZZ_SMOKE_RUNS ?= 12000
+WORLD_FUZZ_SMOKE_SECONDS ?= 60
 WORLD_FUZZ_FLAGS := -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=build/fuzz/
 .PHONY: fuzz-world-build fuzz-world-smoke fuzz-world
 fuzz-smoke: fuzz-world-smoke
@@ -151,7 +154,8 @@ fuzz-world-build:
 	mkdir -p build/fuzz/corpus/world
 
 fuzz-world-smoke: fuzz-world-build
-	$(WORLD_FUZZ) -seed=$(FUZZ_SMOKE_SEED) -max_total_time=$(WORLD_FUZZ_SMOKE_SECONDS) $(WORLD_FUZZ_FLAGS) \
+	$(WORLD_FUZZ) -seed=$(FUZZ_SMOKE_SEED) -runs=$(WORLD_FUZZ_SMOKE_RUNS) \
+	  -max_total_time=$(WORLD_FUZZ_SMOKE_SECONDS) $(WORLD_FUZZ_FLAGS) \
 	  build/fuzz/corpus/world tests/fuzz/corpus/world
 
 fuzz-world: fuzz-world-build

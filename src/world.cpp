@@ -30,6 +30,10 @@ std::string number(double value) { return detail::number_text(value); }
          "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
 }
 
+// A drag whose coordinates round coarser than this fraction of the ball's radius is swept twice
+// (set_position).
+constexpr double kFineDrag = 0x1p-30;
+
 // Events name a wall in 30 bits (event_queue.hpp).
 void require_room_for_a_wall(const char* function, const char* argument, std::size_t walls) {
   if (walls >= detail::EventQueue::kMaxWalls) {
@@ -405,6 +409,48 @@ void World::set_velocity(BallId id, Vec2 velocity) {
   impl_->events_valid = false;
 }
 
+detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end) const {
+  // Each other ball at any of its 3×3 periodic images around the nearest: with diameters below
+  // a third of the period, those are all the images a drag of at most half a period can reach.
+  const Vec2 move = end - from;
+  const int images = def.boundary == Boundary::periodic ? 1 : 0;
+  const double radius = radius_of(slot);
+  const Ball moving{from, radius};
+  // The first touch; where the ball then is comes from the obstacle's side (a radius back from
+  // its nearest point, a sum of radii back from its centre): from + move·t carries the rounding
+  // of the move's length.
+  detail::DragStop first{false, end, end};
+  double fraction = 1.0;
+  const auto keep_first = [&](const Impact& hit, Vec2 touching) {
+    if (!hit.hit || !(hit.t < fraction)) return;
+    fraction = hit.t;
+    first = {true, hit.t > 0.0 ? touching : from, hit.t > 0.0 ? hit.a_at : from};
+  };
+  for (std::uint32_t j = 0; j < balls.size(); ++j) {
+    if (j == slot || !balls[j].alive()) continue;
+    const Vec2 nearest = from + minimum_image(position_at(j, time) - from);
+    const double reach = radius + radius_of(j);
+    for (int kx = -images; kx <= images; ++kx) {
+      for (int ky = -images; ky <= images; ++ky) {
+        const Vec2 other = nearest + Vec2{kx * period.x, ky * period.y};
+        const Impact hit = sweep_ball_ball(moving, move, {other, radius_of(j)});
+        keep_first(hit, other - hit.normal * reach);
+      }
+    }
+  }
+  for (const detail::Wall& wall : walls) {
+    const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
+    if (!hit.hit) continue;
+    // The contact point the query reports is the centre plus the normal times the radius; the
+    // wall's own nearest point to that centre lies on the wall to the rounding of its
+    // coordinates.
+    const Vec2 on_wall = detail::nearest_point(wall, hit.a_at);
+    const Vec2 gap = on_wall - hit.a_at;
+    keep_first(hit, on_wall - (gap == Vec2{} ? hit.normal : normalized(gap)) * radius);
+  }
+  return first;
+}
+
 Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   constexpr const char* kFunction = "World::set_position";
   Impl& w = *impl_;
@@ -415,49 +461,25 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   Vec2 target = position;
   if (placement == Placement::nearest_free) {
     // Sweep the ball from where it is to where it is asked to go; it stops at the first touch.
-    // In a periodic cell it goes the shortest way (at most half a period on each axis), and
-    // meets each other ball at any of its 3×3 images around the nearest: with diameters below a
-    // third of the period, those are all the images within reach of such a path.
+    // In a periodic cell it goes the shortest way (at most half a period on each axis).
     const bool periodic = w.def.boundary == Boundary::periodic;
-    const Vec2 move =
-        periodic ? w.minimum_image(w.wrap_into_cell(position) - from) : position - from;
-    const int images = periodic ? 1 : 0;
-    const double radius = w.radius_of(slot);
-    const Ball moving{from, radius};
-    // The first touch, and where the ball then is, taken from the obstacle's side (a radius
-    // back from its centre or its nearest point): from + move·fraction carries the rounding of
-    // the move's length, which for a long drag (10⁸) is an overlap far beyond the rounding of
-    // the stop point's own coordinates.
-    double fraction = 1.0;
-    Vec2 stop = from + move;
-    const auto keep_first = [&](const Impact& hit, Vec2 touching) {
-      if (!hit.hit || !(hit.t < fraction)) return;
-      fraction = hit.t;
-      stop = hit.t > 0.0 ? touching : from;
-    };
-    for (std::uint32_t j = 0; j < w.balls.size(); ++j) {
-      if (j == slot || !w.balls[j].alive()) continue;
-      const Vec2 nearest = from + w.minimum_image(w.position_at(j, w.time) - from);
-      const double reach = radius + w.radius_of(j);
-      for (int kx = -images; kx <= images; ++kx) {
-        for (int ky = -images; ky <= images; ++ky) {
-          const Vec2 other = nearest + Vec2{kx * w.period.x, ky * w.period.y};
-          const Impact hit = sweep_ball_ball(moving, move, {other, w.radius_of(j)});
-          keep_first(hit, other - hit.normal * reach);
-        }
-      }
+    const Vec2 end =
+        periodic ? from + w.minimum_image(w.wrap_into_cell(position) - from) : position;
+    detail::DragStop first = w.sweep_drag(slot, from, end);
+    // A long drag finds its touch only to the rounding of its own coordinates (10³ for a drag
+    // from 10¹⁸): a second sweep from a little short of it, where the coordinates are those of
+    // the obstacle, finds it to theirs. It starts before the true touch, so on a free place.
+    const double resolution =
+        8.0 * std::numeric_limits<double>::epsilon() *
+        std::max({std::abs(from.x), std::abs(from.y), std::abs(end.x), std::abs(end.y)});
+    const double swept = length(first.swept - from);
+    const double back = 4.0 * resolution;
+    if (first.touched && resolution > kFineDrag * w.radius_of(slot) && swept > back) {
+      const Vec2 nearer = first.swept - (end - from) * (back / length(end - from));
+      first = w.sweep_drag(slot, nearer, end);
     }
-    for (const detail::Wall& wall : w.walls) {
-      const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
-      if (!hit.hit) continue;
-      // The contact point the query reports is the centre plus the normal times the radius; the
-      // wall's own nearest point to that centre lies on the wall to the rounding of its
-      // coordinates.
-      const Vec2 on_wall = detail::nearest_point(wall, hit.a_at);
-      const Vec2 gap = on_wall - hit.a_at;
-      keep_first(hit, on_wall - (gap == Vec2{} ? hit.normal : normalized(gap)) * radius);
-    }
-    target = stop;
+    // Untouched, it reaches the very place asked for (from + (position − from) need not be it).
+    target = first.touched ? first.stop : position;
   }
   target = w.wrap_into_cell(target);
   w.ensure_grid(target, w.radius_of(slot));

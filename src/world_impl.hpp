@@ -52,6 +52,14 @@ struct BallInfo {
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
 };
 
+// set_position(nearest_free)'s sweep: whether the ball touched something on its way, where it
+// then stops, and where the sweep itself put its centre at that touch.
+struct DragStop {
+  bool touched = false;
+  Vec2 stop;
+  Vec2 swept;
+};
+
 }  // namespace detail
 
 struct World::Impl {
@@ -132,6 +140,8 @@ struct World::Impl {
     return d;
   }
   [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const;
+  // nearest_free's sweep of ball `slot` from `from` to `end` (world.cpp).
+  [[nodiscard]] detail::DragStop sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end) const;
   // The first ball or wall that a ball of radius r at p would overlap (ignoring `except`), as a
   // message; empty when the place is free.
   [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;

@@ -508,6 +508,27 @@ TEST(WorldFuzzFound, LongDragStopsTouchingRatherThanOverlapping) {
   }
 }
 
+// Found by the deterministic fuzz smoke (CI): a ball 10¹⁸ away dragged with nearest_free to a
+// free place next to a segment's end landed on the end itself, overlapping by its whole radius:
+// from + (target − from) rounds to a multiple of 128 there, and so did the sweep's touch. An
+// untouched drag now ends at the very place asked for, and a touch found at such a scale is
+// found again by a second sweep from just short of it. Checked with the ball at rest, so that
+// the audit allows no rounding of its motion.
+TEST(WorldFuzzFound, DragFromFarAwayEndsAtThePlaceAskedOrTouching) {
+  const Vec2 far{-5.0739021398225542e+17, -1.1987567529331123e+18};
+  const Vec2 targets[] = {{2.5000381475547417, 0.091859311818112466}, {2.5, 2.0}, {9.0, 2.2}};
+  for (const Vec2 target : targets) {
+    World world;
+    world.add_segment({{0.0, 0.0}, {8.0, 2.000152590218967}});
+    const BallId ball = world.add_ball(extreme_ball(far, {}, 0.1, 3.0));
+    const Vec2 placed = world.set_position(ball, target, Placement::nearest_free);
+    if (target.y < 1.0) {
+      EXPECT_EQ(placed, target);  // free: reached exactly
+    }
+    EXPECT_FALSE(world.audit().has_value()) << "to " << target.x << ": " << *world.audit();
+  }
+}
+
 // Found by the world fuzzer (UBSan: NaN converted to int in the grid): a lone ball of radius
 // 0.01 in an open world, flown out to 5·10¹⁸ (the world's time at 2.6·10¹⁸). The grid re-planned
 // around it with a margin of two cells, 0.04, below the rounding of such coordinates (1024):

@@ -41,6 +41,18 @@ World extreme_box(double side) {
   return World(def);
 }
 
+// A periodic cell [0, side]²; restitution below 1 comes with the collapse guard the fuzzer used
+// (collapse_time 10⁻³).
+World extreme_periodic(double side, double restitution = 1.0) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {side, side};
+  def.restitution = restitution;
+  if (restitution < 1.0) def.collapse_time = 1e-3;
+  return World(def);
+}
+
 // Steps the world by dt, which must be refused with carom::InvalidArgument from World::step
 // naming `why` ("jammed", "stalled"), the world left valid.
 void expect_endless_step_refused(World& world, double dt, const std::string& why) {
@@ -164,12 +176,7 @@ TEST(WorldExtreme, RadiiFromAMillionthToAMillionInOneWorld) {
 // bubble sort: at most 45 per row, so time then moves on. The gaps matter: a closed ring of
 // touching disks is jammed (DISABLED_JammedRowOfTouchingBallsAdvances).
 World touching_square_packing(int side, std::uint64_t seed) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  const double cell = side + side / 10;
-  def.upper = {cell, cell};
-  World world(def);
+  World world = extreme_periodic(side + side / 10);
   std::mt19937_64 engine(seed);
   std::normal_distribution<double> component(0.0, 1.0);
   for (int i = 0; i < side; ++i) {
@@ -219,11 +226,7 @@ TEST(WorldExtreme, MillionTouchingDisksCollideAndStayApartLong) {
 // ring), and step(dt) never returned. The engine now counts the contacts at one instant and
 // refuses the world past 100 a ball plus 2^16 (world_engine.cpp), naming the jam.
 TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  def.upper = {4.0, 4.0};
-  World world(def);
+  World world = extreme_periodic(4.0);
   for (int i = 0; i < 4; ++i) {
     world.add_ball(extreme_ball({i + 0.5, 2.0}, {i == 0 ? 1.0 : 0.0, 0.0}));
   }
@@ -345,11 +348,7 @@ TEST(WorldFuzzFound, TinySlowBallBetweenBoxWallsPassesTheAudit) {
 // the sweep (against each ball's nearest image only) missed, so nearest_free put one ball on top
 // of the other. It now goes the shortest way and meets every image within reach.
 TEST(WorldFuzzFound, PeriodicDragStopsAtTheImageOfABall) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  World world(def);
+  World world = extreme_periodic(20.0);
   const BallId still = world.add_ball(extreme_ball({20.0, 20.0}, {}, 0.1, 3.0));  // wraps to (0, 0)
   const BallId dragged = world.add_ball(extreme_ball({16.797436484321359, 40.0}, {}, 0.1, 3.0));
   const Vec2 placed = world.set_position(dragged, {20.0, 20.0}, Placement::nearest_free);
@@ -391,11 +390,7 @@ TEST(WorldFuzzFound, ApproachingPairThatMissesEndsRunCollisions) {
 // axis a pair can meet through an image that was not the nearest when it was predicted. Fixed
 // by trying the nine images in grids under 7 cells a side (docs/world.md, "Boundaries").
 TEST(WorldFuzzFound, LargeBallsInAPeriodicCellMeet) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  World world(def);
+  World world = extreme_periodic(20.0);
   world.add_ball(extreme_ball({-19.8974593728542, -10.858319981689172},
                               {10.886588208720136, 99.405644694724231}, 3.0, 0.001));
   world.add_ball(extreme_ball({10.95170519569696, 37.012588693064771},
@@ -411,13 +406,7 @@ TEST(WorldFuzzFound, LargeBallsInAPeriodicCellMeet) {
 // t = 7.80 (balls 1 and 2) the next one, at t = 10.47, was balls 0 and 1 found 3.2 deep into each
 // other.
 TEST(WorldFuzzFound, ImmovableBallInAPeriodicCellMeetsEveryBall) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  def.restitution = 0.5;
-  def.collapse_time = 1e-3;
-  World world(def);
+  World world = extreme_periodic(20.0, 0.5);
   world.add_ball(extreme_ball({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0, kImmovable));
   world.add_ball(extreme_ball({12.866102082856489, 8.8926527809567411}, {}, 3.0, 3.0));
   world.add_ball(extreme_ball({4.6088349736781868, 9.9821469443808652},
@@ -604,11 +593,7 @@ TEST(WorldFuzzFound, CrossingsWhereTimeNoLongerAdvancesAreRefusedAsAStall) {
 // leaves its column (x = 6.67, t = 5.83): with the nearest image alone no event comes before the
 // overlap.
 TEST(WorldPeriodicImages, APairMeetsThroughAnImageThatWasNotTheNearest) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  World world(def);
+  World world = extreme_periodic(20.0);
   const BallId a = world.add_ball(extreme_ball({2.0, 10.0}, {0.0, 0.0}, 2.5));
   const BallId b = world.add_ball(extreme_ball({12.5, 10.0}, {-1.0, 0.0}, 2.5));
   world.run_until(6.5);
@@ -634,13 +619,7 @@ void refusal_allowed(Call call) {
 // The fuzzer's own sequence of calls (tests/fuzz/crashes/world-periodic-missed-contact-radius-2.5
 // in its branch), audited after each: the engine once let balls 1 and 3 overlap by 2.15.
 TEST(WorldPeriodicImages, TheFuzzersSequenceStaysApart) {
-  WorldDef def;
-  def.boundary = Boundary::periodic;
-  def.lower = {0.0, 0.0};
-  def.upper = {20.0, 20.0};
-  def.restitution = 0.5;
-  def.collapse_time = 1e-3;
-  World world(def);
+  World world = extreme_periodic(20.0, 0.5);
   BallDef post = extreme_ball({20.0, 20.0}, {7.0, -1.7145055188062944e-15}, 2.0);
   post.mass = kImmovable;
   world.add_ball(post);

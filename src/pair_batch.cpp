@@ -133,7 +133,7 @@ void PairBatch::solve(double horizon) {
     return;
   }
 #endif
-  for (std::size_t k = 0; k < count; ++k) solve_pair(*this, k, horizon);
+  solve_one_by_one(horizon);
 }
 
 void PairBatch::solve_one_by_one(double horizon) {

@@ -1,6 +1,7 @@
 // Contact response along the normal. Derivation: docs/derivation.md, "The bounce".
 #include "carom/bounce.hpp"
 
+#include "bowl_bounce.hpp"
 #include "validate.hpp"
 
 namespace carom {
@@ -60,6 +61,17 @@ WallBounceResult bounce_off_static(Vec2 velocity, double mass, Vec2 normal, doub
   if (!(approach_speed > 0.0)) return {velocity, 0.0};
   const double speed_change = (1.0 + restitution) * approach_speed;
   return {velocity - n * speed_change, speed_change * mass};
+}
+
+WallBounceResult bounce_inside_arc(Vec2 velocity, double mass, Vec2 normal, double restitution) {
+  constexpr const char* kFunction = "bounce_inside_arc";
+  detail::require_finite(kFunction, "velocity", velocity);
+  detail::require_positive(kFunction, "mass", mass);
+  detail::require_nonzero(kFunction, "normal", normal);
+  detail::require_restitution(kFunction, "restitution", restitution);
+  const detail::BowlBounce out =
+      detail::bounce_inside_arc(velocity, normalized(normal), restitution);
+  return {out.velocity, out.normal_speed_change * mass};
 }
 
 }  // namespace carom

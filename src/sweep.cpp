@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "arc_frame.hpp"
 #include "circle_crossing.hpp"
@@ -242,6 +243,11 @@ Vec2 gap_to_segment(const Segment& segment, Vec2 p, Vec2 nearest) {
   return (normal * -dot(p * 0.5 - segment.a * 0.5, normal)) * 2.0;
 }
 
+// A ball as large as an arc's circle fills it when its centre is within 2^-kFillingExponent of
+// the radius from the arc's centre: far more than the rounding of a placement there, far less
+// than any overlap worth the name.
+constexpr int kFillingExponent = 40;
+
 // Contacts with the arc's interior: the centre crosses the circle of radius arc + ball from
 // outside, or the circle of radius |arc − ball| from inside (or, for a ball larger than the
 // arc's radius, enters it from the far side of the arc's centre), with the touched point within
@@ -269,30 +275,47 @@ void contact_with_arc_interior(const Ball& ball, Vec2 velocity, const ArcFrame& 
       offset_motion(ball.center, arc.center, velocity, arc.radius, ball.radius);
   if (!detail::within_distance(outer.s, outer.radius)) {
     consider(outer, entry_crossing(outer, horizon), 1.0, -1.0);
-  } else if (!detail::strictly_within_distance(outer.s, outer.radius) &&
+  } else if (!detail::strictly_within_distance(outer.s,
+                                               std::ldexp(arc.radius, -outer.length_exponent)) &&
              detail::dot_positive(-outer.s, outer.u)) {
-    // Exactly on the circle along which the ball touches the arc's outside (where nearest_free
-    // stops it, say) and moving inwards: it touches now. entry_crossing's root is at t = 0, and
-    // contact_at_start's gap to the nearest point may round to just beyond the radius, so
-    // neither would report it and the ball would pass into the arc.
+    // On or a rounding inside the circle along which the ball touches the arc's outside (where
+    // nearest_free stops it, say), its centre outside the arc's circle, and moving inwards: it
+    // touches now. entry_crossing's root is at t <= 0, and contact_at_start's gap to the
+    // nearest point may round to just beyond the radius, so neither would report it and the
+    // ball would pass into the arc.
     consider(outer, {true, 0.0}, 1.0, -1.0);
   }
   ScaledMotion inner = offset_motion(ball.center, arc.center, velocity, arc.radius, -ball.radius);
   if (inner.radius > 0.0) {
     detail::Crossing leaving = exit_crossing(inner, horizon);
     // On or a rounding past the circle along which the ball touches the arc's inside (where
-    // set_position's nearest_free stops it, say), its centre still inside the arc's circle, and
-    // moving outwards: it touches now. exit_crossing's root is then at t <= 0, which it does not
-    // report, and the ball would leave through the arc.
+    // set_position's nearest_free stops it, say), its centre still inside the arc's circle,
+    // moving, and its path never back inside that circle: it touches now. Moving outwards,
+    // exit_crossing's root is at t <= 0, which it does not report; moving along the circle, or
+    // inwards by less than the rounding of the position, the path misses the circle (inside a
+    // circle the gap closes at second order: the one place where a graze is a contact). Either
+    // way the ball would leave through the arc.
     if (!leaving.found && !detail::strictly_within_distance(inner.s, inner.radius) &&
         detail::strictly_within_distance(inner.s, std::ldexp(arc.radius, -inner.length_exponent)) &&
-        detail::dot_positive(inner.s, inner.u)) {
+        inner.u != Vec2{} &&
+        !exit_crossing(inner, std::numeric_limits<double>::max()).found) {  // beyond horizon
       leaving = {true, 0.0};
     }
     consider(inner, leaving, 1.0, 1.0);
   } else if (inner.radius < 0.0) {
     inner.radius = -inner.radius;
     consider(inner, entry_crossing(inner, horizon), -1.0, -1.0);
+  } else if (inner.u != Vec2{} &&
+             detail::within_distance(
+                 inner.s, std::ldexp(arc.radius, -inner.length_exponent - kFillingExponent))) {
+    // A ball exactly as large as the arc's circle, its centre on the arc's centre (or a
+    // rounding off it): it fills the circle, and any motion presses it into the wall at once,
+    // where it moves to (a jam, which a world refuses). No circle is left for it to cross.
+    const bool outwards = inner.s != Vec2{} && detail::dot_positive(inner.s, inner.u);
+    const Vec2 direction = outwards ? direction_at(inner, 0.0) : normalized(velocity);
+    if (arc.contains(direction)) {
+      keep_earliest(best, 0.0, arc.center + direction * arc.radius, direction);
+    }
   }
 }
 

@@ -210,6 +210,7 @@ struct World::Impl {
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
+  [[nodiscard]] static bool inside_arc(const detail::Wall& wall, Vec2 p);
   void cross_cell(std::uint32_t ball, std::uint32_t side, double t);
   [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
 };

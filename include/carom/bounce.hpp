@@ -48,4 +48,26 @@ struct WallBounceResult {
 [[nodiscard]] WallBounceResult bounce_off_static(Vec2 velocity, double mass, Vec2 normal,
                                                  double restitution = 1.0);
 
+// The sines of the angles to the wall below which a ball in a bowl counts as sliding, and at
+// which it leaves at least (bounce_inside_arc).
+inline constexpr double kBowlSlidingSine = 0x1p-6;
+inline constexpr double kBowlLeavingSine = 0x1p-7;
+
+// A ball of the given mass (> 0, finite) touching the inside of an arc (a ball in a bowl),
+// normal pointing from the ball away from the arc's centre (as carom::Impact gives it). Inside
+// a circle a ball that leaves the wall flat re-enters it at once (the gap closes at second
+// order): the limit of ever flatter bounces is sliding along the circle, which no straight path
+// follows, and a flat bounce changes nothing. So here, unlike bounce_off_static:
+// - a ball arriving flatter than kBowlSlidingSine (the sine of its angle to the wall) is
+//   sliding, and bounces elastically whatever the restitution (a frictionless wall does no work
+//   on a sliding ball);
+// - a ball never leaves flatter than kBowlLeavingSine: a velocity that would is turned to that
+//   angle, its speed kept (the one turn in carom that is not along the normal; it changes the
+//   speed along the wall by less than 2^-15 of the speed).
+// A ball sliding round a bowl then bounces every 2^-6·ρ of travel or more (ρ: the arc's radius
+// less the ball's), keeps its speed, and stays within 2^-13·ρ of the circle it slides along.
+// docs/derivation.md, "A ball sliding in a bowl".
+[[nodiscard]] WallBounceResult bounce_inside_arc(Vec2 velocity, double mass, Vec2 normal,
+                                                 double restitution = 1.0);
+
 }  // namespace carom

@@ -14,7 +14,10 @@
 // - normal is a unit vector from A (the first, moving ball) towards B (the other ball or the
 //   static shape). For ball against ball it is the direction from A's centre to B's centre.
 // - A contact counts only when the two approach at that instant. Touching and separating, or
-//   a tangential graze (the relative motion only brushes the contact distance), is no hit.
+//   a tangential graze (the relative motion only brushes the contact distance), is no hit —
+//   except on the inside of an arc, where a ball touching the wall and moving along it enters
+//   it at second order: a hit at t = 0 with normal speed 0, which carom::bounce_inside_arc
+//   answers (a plain bounce would change nothing).
 // - Starting overlapped is reported, never hidden: overlapping is set, t = 0, a_at/b_at are the
 //   start positions and normal points from A to B's nearest part; hit is set only when they
 //   approach (a caller resolving contacts must then respond at once).

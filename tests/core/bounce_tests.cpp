@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "carom/bounce.hpp"
+#include "carom/error.hpp"
 #include "random_cases.hpp"
 
 namespace carom {
@@ -164,6 +165,48 @@ TEST(BounceProperty, StaticBounceMatchesAnImmovablePartner) {
     ASSERT_NEAR(wall.velocity.y, ball.velocity_a.y, kRelTol * scale) << "case " << i;
     ASSERT_NEAR(wall.impulse, ball.impulse, kRelTol * scale * p.ma) << "case " << i;
   }
+}
+
+// ---- a ball in a bowl (bounce_inside_arc) ---------------------------------------------------
+// The ball at the bottom of a bowl: the normal points down, away from the arc's centre.
+constexpr Vec2 kDown{0.0, -1.0};
+
+TEST(BounceInsideArc, AGrazeLeavesAtTheLeavingAngleWithItsSpeed) {
+  const WallBounceResult r = bounce_inside_arc({5.0, 0.0}, 2.0, kDown, 0.5);
+  EXPECT_NEAR(length(r.velocity), 5.0, 1e-15);
+  EXPECT_NEAR(r.velocity.y, 5.0 * kBowlLeavingSine, 1e-15);
+  EXPECT_GT(r.velocity.x, 0.0);
+  EXPECT_NEAR(r.impulse, 2.0 * 5.0 * kBowlLeavingSine, 1e-15);
+}
+
+TEST(BounceInsideArc, ASteepArrivalBouncesAsOffAnyWall) {
+  const WallBounceResult bowl = bounce_inside_arc({3.0, -4.0}, 2.0, kDown, 0.5);
+  const WallBounceResult flat = bounce_off_static({3.0, -4.0}, 2.0, kDown, 0.5);
+  EXPECT_EQ(bowl.velocity, flat.velocity);  // (3, 2)
+  EXPECT_EQ(bowl.impulse, flat.impulse);
+}
+
+TEST(BounceInsideArc, AFlatArrivalIsElasticWhateverTheRestitution) {
+  // Sine 0.01: below kBowlSlidingSine (sliding), above kBowlLeavingSine (no turn needed).
+  const WallBounceResult r = bounce_inside_arc({1.0, -0.01}, 1.0, kDown, 0.0);
+  EXPECT_EQ(r.velocity, (Vec2{1.0, 0.01}));
+  EXPECT_EQ(r.impulse, 0.02);
+}
+
+TEST(BounceInsideArc, ADeadBallIsTurnedAlongTheWallKeepingItsTangentialSpeed) {
+  // e = 0 leaves (3, 0), flat along the wall: turned to the leaving angle, speed 3 kept.
+  const WallBounceResult r = bounce_inside_arc({3.0, -4.0}, 1.0, kDown, 0.0);
+  EXPECT_NEAR(length(r.velocity), 3.0, 1e-15);
+  EXPECT_NEAR(r.velocity.y, 3.0 * kBowlLeavingSine, 1e-15);
+  EXPECT_NEAR(r.impulse, 4.0 + 3.0 * kBowlLeavingSine, 1e-14);
+}
+
+TEST(BounceInsideArc, RejectsBadArguments) {
+  const double nan = std::nan("");
+  EXPECT_THROW((void)bounce_inside_arc({nan, 0.0}, 1.0, kDown), InvalidArgument);
+  EXPECT_THROW((void)bounce_inside_arc({1.0, 0.0}, 0.0, kDown), InvalidArgument);
+  EXPECT_THROW((void)bounce_inside_arc({1.0, 0.0}, 1.0, {0.0, 0.0}), InvalidArgument);
+  EXPECT_THROW((void)bounce_inside_arc({1.0, 0.0}, 1.0, kDown, 1.5), InvalidArgument);
 }
 
 }  // namespace

@@ -80,6 +80,42 @@ TEST(SweepBallArc, RestingInTheBowlAndMovingUpHitsTheOtherSideLater) {
   EXPECT_LT(impact.point.y, 0.0);
 }
 
+// Inside a circle a ball touching the wall and moving along it re-enters the wall at once (the
+// gap closes at second order): unlike a graze of a flat or convex wall, it is a hit now, with
+// normal speed 0 (carom::bounce_inside_arc answers it).
+TEST(SweepBallArc, TouchingTheInsideAndMovingAlongItHitsAtZero) {
+  const Impact step = sweep_ball_arc({{0.0, -4.0}, 1.0}, {3.0, 0.0}, kBowl);
+  ASSERT_TRUE(step.hit);
+  EXPECT_FALSE(step.overlapping);
+  EXPECT_EQ(step.t, 0.0);
+  EXPECT_NEAR(step.normal.x, 0.0, kTol);
+  EXPECT_NEAR(step.normal.y, -1.0, kTol);
+  EXPECT_NEAR(step.point.y, -5.0, kTol);
+  const Impact timed = time_of_impact_ball_arc({{0.0, -4.0}, 1.0}, {-3.0, 0.0}, kBowl, 10.0);
+  ASSERT_TRUE(timed.hit);
+  EXPECT_EQ(timed.t, 0.0);
+  // At rest it stays: no hit.
+  EXPECT_FALSE(time_of_impact_ball_arc({{0.0, -4.0}, 1.0}, {0.0, 0.0}, kBowl, 10.0).hit);
+}
+
+TEST(SweepBallArc, TouchingTheOutsideAndMovingAlongItIsNoHit) {
+  // The convex side: a ball moving along it slides clear.
+  EXPECT_FALSE(sweep_ball_arc({{0.0, 6.0}, 1.0}, {3.0, 0.0}, kDome).hit);
+}
+
+// A ball as large as the arc's circle on its centre fills it: any motion meets the wall at once,
+// where it moves to.
+TEST(SweepBallArc, BallFillingTheCircleHitsAtZeroWhereItMoves) {
+  const Arc ring{{0.0, 0.0}, 5.0, 0.0, 2.0 * kPi};
+  const Impact impact = time_of_impact_ball_arc({{0.0, 0.0}, 5.0}, {0.0, -2.0}, ring, 1.0);
+  ASSERT_TRUE(impact.hit);
+  EXPECT_EQ(impact.t, 0.0);
+  EXPECT_NEAR(impact.normal.y, -1.0, kTol);
+  EXPECT_NEAR(impact.point.y, -5.0, kTol);
+  // Towards the dome's gap it meets nothing there.
+  EXPECT_FALSE(time_of_impact_ball_arc({{0.0, 0.0}, 5.0}, {0.0, -2.0}, kDome, 1.0).hit);
+}
+
 TEST(SweepBallArc, OverlappingAndApproachingHitsAtZeroFlagged) {
   const Impact impact = sweep_ball_arc({{0.0, 5.5}, 1.0}, {0.0, -1.0}, kDome);
   ASSERT_TRUE(impact.hit);

@@ -176,8 +176,7 @@ class Harness {
 
   void run() {
     if (def_.boundary != Boundary::periodic) add_walls();
-    for (std::size_t call = 0; call < kMaxCalls && !in_.done() && !touching_an_arc_ && !jammed_;
-         ++call) {
+    for (std::size_t call = 0; call < kMaxCalls && !in_.done() && !jammed_; ++call) {
       one_call();
       if (slowed_) break;  // before the audit (see set_velocity)
       check_invariants();
@@ -209,7 +208,6 @@ class Harness {
           CAROM_TRACE("add_arc({%.17g, %.17g}, %.17g, %.17g, %.17g)\n", c.x, c.y, radius, start,
                       start + span);
           world().add_arc({c, radius, start, start + span});
-          circles_.push_back({c, radius});
         }
       } catch (const carom::InvalidArgument& error) {
         fail("a valid wall was refused:", error.what());
@@ -276,18 +274,12 @@ class Harness {
       def.restitution = kRestitutions[r / 4 % std::size(kRestitutions)];
       if (*def.restitution < 1.0 && def_.collapse_time == 0.0) def.restitution = 1.0;
     }
-    // An inelastic ball in a bowl loses its normal speed bounce by bounce and settles into
-    // sliding along the inside of the arc: the known limit of concave walls (docs/world.md,
-    // "Known limits"; WorldExtreme.DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside). Where
-    // there are arcs, balls are elastic, which keeps each path's angle to the circle for ever.
-    if (!circles_.empty()) def.restitution = 1.0;
     const Snapshot before = snapshot(world());
     CAROM_TRACE("add_ball(p {%.17g, %.17g}, v {%.17g, %.17g}, r %.17g, m %.17g, e %.17g)\n",
                 def.position.x, def.position.y, def.velocity.x, def.velocity.y, def.radius,
                 def.mass, def.restitution.value_or(-1.0));
     try {
       const BallId id = world().add_ball(def);
-      note_touching_an_arc(id);
       check(world().contains(id), "add_ball returned a handle the world does not contain");
       check(world().radius(id) == def.radius, "add_ball lost the radius");
       if (def.restitution && *def.restitution < 1.0) elastic_ = false;
@@ -331,7 +323,6 @@ class Harness {
           id, target, nearest ? carom::Placement::nearest_free : carom::Placement::refuse);
       check(finite(placed), "set_position placed a ball at a non-finite place");
       check(placed == world().position(id), "set_position returned another place than it used");
-      note_touching_an_arc(id);
       if (!nearest && def_.boundary != Boundary::periodic) {
         check(placed == target, "set_position(refuse) moved the ball elsewhere");
       }
@@ -365,7 +356,6 @@ class Harness {
     const double old_speed = carom::length(world().velocity(id));
     if (carom::length(v) * 16.0 < old_speed && world().time() > 0.0) slowed_ = true;
     world().set_velocity(id, v);
-    note_touching_an_arc(id);
     check(world().velocity(id) == v, "set_velocity did not set it");
     if (world().mass(id) == carom::kImmovable && (v.x != 0.0 || v.y != 0.0)) driven_ = true;
     reset_energy();
@@ -528,25 +518,6 @@ class Harness {
     check(snapshot(world()) == before, "a refused call changed the world");
   }
 
-  // Known problems, not fuzzed further: a ball exactly touching an arc's circle (nearest_free
-  // stops it there) can leave through the arc on its next move. Moving along the inside it is a
-  // limit of the contact rule (tests/world/world_extreme_tests.cpp,
-  // DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside); moving outwards it is a bug, likely
-  // the rounding disagreement fixed for segments in src/sweep.cpp
-  // (tests/fuzz/crashes/world-ball-dragged-against-inside-of-arc). The input ends there.
-  void note_touching_an_arc(BallId id) {
-    const Vec2 p = world().position(id);
-    const double r = world().radius(id);
-    for (const Circle& circle : circles_) {
-      const Vec2 out = p - circle.center;
-      const double d = carom::length(out);
-      if ((std::abs(d - (circle.radius - r)) <= 1e-9 * circle.radius ||
-           std::abs(d - (circle.radius + r)) <= 1e-9 * circle.radius)) {
-        touching_an_arc_ = true;
-      }
-    }
-  }
-
   void reset_energy() { energy_ = world().kinetic_energy(); }
 
   void check_invariants() {
@@ -583,12 +554,6 @@ class Harness {
   std::optional<std::uint32_t> stop_after_;
   bool elastic_ = true;
   bool driven_ = false;  // an immovable ball has moved: energy is not a conserved quantity
-  struct Circle {
-    Vec2 center;
-    double radius = 0.0;
-  };
-  std::vector<Circle> circles_;  // of the arcs
-  bool touching_an_arc_ = false;
   bool jammed_ = false;  // a run refused jammed balls or a stalled time: the input ends
   bool slowed_ = false;  // set_velocity slowed a ball more than 16 times: the input ends
   double energy_ = 0.0;

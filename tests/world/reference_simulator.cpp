@@ -212,8 +212,16 @@ void ReferenceSimulator::resolve(const Candidate& contact) {
   } else {
     record.wall = contact.b;
     record.approach_speed = dot(a.velocity, contact.normal);
+    const ReferenceWall& wall = scene_.walls[contact.b];
+    // The inside of an arc (a ball in a bowl) has its own bounce: the contact's normal points
+    // straight out from the arc's centre there, and elsewhere (its outside, an end point) not.
+    const Vec2 out = a.position - (wall.is_arc ? wall.arc.center : Vec2{});
+    const bool in_bowl = wall.is_arc && length(out) < wall.arc.radius &&
+                         dot(out, contact.normal) > 0.0 &&
+                         std::abs(cross(out, contact.normal)) <= 1e-9 * length(out);
     const WallBounceResult result =
-        bounce_off_static(a.velocity, a.mass, contact.normal, a.restitution);
+        in_bowl ? bounce_inside_arc(a.velocity, a.mass, contact.normal, a.restitution)
+                : bounce_off_static(a.velocity, a.mass, contact.normal, a.restitution);
     a.velocity = result.velocity;
     record.impulse = result.impulse;
   }

@@ -234,22 +234,6 @@ TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
   EXPECT_EQ(world.time(), 0.0);
 }
 
-// A ball touching the inside of a full circle and moving along it (normal speed 0) leaves the
-// circle at once: the contact rule "touching and not approaching is no contact" (right for flat
-// and convex walls, along which such a ball slides clear) is wrong for a concave wall, where the
-// gap closes at second order. Reporting a contact at time 0 instead would bounce at normal speed
-// 0, change nothing and repeat for ever: it needs a decision in the engine (reported to the lead;
-// src/sweep.cpp and src/world_engine.cpp). The world fuzzer found it (nearest_free into a bowl,
-// then an axis-aligned velocity) and stops an input that makes such a ball.
-TEST(WorldExtreme, DISABLED_BallSlidingAlongTheInsideOfAnArcStaysInside) {
-  World world;
-  world.add_arc({{20.0, 20.0}, 8.5, std::numbers::pi, 3.0 * std::numbers::pi});
-  world.add_ball(
-      extreme_ball({20.0, 12.0}, {7.0, 0.0}));  // touching the circle exactly, at its bottom
-  world.step(0.0121);
-  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
-}
-
 // ---- points as walls -------------------------------------------------------------------------
 
 // A ball of radius 0.5 at (-3, 0.3) moving at (1, 0) meets a point at the origin when it is 0.4
@@ -471,6 +455,36 @@ TEST(WorldFuzzFound, BallDraggedAgainstTheOutsideOfAnArcStaysThere) {
   const BallId ball = world.add_ball(extreme_ball(touching, {}, 0.5, 1.0));
   EXPECT_EQ(world.set_position(ball, center, Placement::nearest_free), touching);
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// Found by the world fuzzer once it no longer ended an input at a ball touching an arc
+// (session 5): nearest_free had left this ball a rounding inside the circle along which it
+// touches the first arc's outside (by the squared distance; its length rounds to 8.5 + 0.1
+// exactly, so the gap to the arc's nearest point rounds to the radius, no contact); dragged
+// from there towards the centre it went through that arc and stopped on the second, 0.0024 off
+// centre, overlapping the first by 0.0024. The t = 0 contact above covered the ball exactly on
+// that circle, not a rounding inside it.
+TEST(WorldFuzzFound, BallARoundingInsideAnArcsOuterContactCircleStaysOutside) {
+  World world;
+  world.add_arc({{20.0, 20.0}, 8.5, 3.1415926535897931, 9.4247779607693793});
+  world.add_arc({{19.997558556496529, 20.0}, 8.5, 3.1415926535897931, 9.4247779607693793});
+  const Vec2 touching{28.486684391823569, 18.608530261350182};
+  const Vec2 offset = touching - Vec2{20.0, 20.0};
+  ASSERT_LT(dot(offset, offset), (8.5 + 0.1) * (8.5 + 0.1));
+  const BallId ball = world.add_ball(extreme_ball(touching, {}, 0.1, 1.0));
+  EXPECT_EQ(world.set_position(ball, {20.0, 20.0}, Placement::nearest_free), touching);
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
+// Found by the world fuzzer the same way: a ball exactly as large as a full arc's circle, placed
+// on its centre (touching it all round, no overlap), then moving: no circle was left for its
+// centre to cross (the arc's radius less the ball's is 0), so it left through the arc. It fills
+// the circle, so any motion presses it into the wall: a jam, refused.
+TEST(WorldFuzzFound, BallFillingAnArcsCircleIsRefusedAsJammed) {
+  World world;
+  world.add_arc({{20.0, 0.00030518043793392844}, 0.5, -std::numbers::pi, std::numbers::pi});
+  world.add_ball(extreme_ball({20.0, 0.00030518043793392844}, {99.92275, 3.92987}, 0.5, 1.0));
+  expect_endless_step_refused(world, 5.0, "jammed");
 }
 
 // Found by the world fuzzer: a ball 10⁸ away dragged with nearest_free into a slanted segment

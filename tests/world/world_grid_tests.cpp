@@ -14,7 +14,7 @@
 namespace carom {
 namespace {
 
-constexpr double kRadius = 0.5;
+constexpr double kGridBallRadius = 0.5;
 
 // side × side disks of radius 0.5 on a square lattice of the given pitch, with random
 // velocities, in a periodic cell or a box that fits them.
@@ -30,7 +30,7 @@ World lattice(int side, double pitch, Boundary boundary, std::uint64_t seed) {
       const double vx = speed(engine);
       const double vy = speed(engine);
       def.velocity = {vx, vy};
-      def.radius = kRadius;
+      def.radius = kGridBallRadius;
       world.add_ball(def);
     }
   }

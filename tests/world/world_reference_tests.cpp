@@ -216,6 +216,28 @@ TEST(WorldReference, AngledWallsAndArcsContactByContact) {
   expect_contact_by_contact(built, scene, kContactsCompared, tolerances_for(options));
 }
 
+// Inelastic balls in a round bowl: their bounces off the wall flatten until they slide round
+// it, where both the World and the oracle bounce them by bounce_inside_arc (sliding: elastic,
+// never leaving flatter than kBowlLeavingSine). Most of the contacts compared are sliding ones.
+TEST(WorldReference, InelasticBallsSlidingRoundABowlContactByContact) {
+  ReferenceScene scene;
+  scene.walls.push_back(testing::arc_wall({{0.0, 0.0}, 10.0, 0.0, 2.0 * std::numbers::pi}));
+  for (int k = 0; k < 6; ++k) {
+    testing::ReferenceBall ball;
+    const double angle = k * std::numbers::pi / 3.0;
+    ball.position = Vec2{std::cos(angle), std::sin(angle)} * 4.0;
+    ball.velocity = Vec2{std::cos(1.7 * k + 0.3), std::sin(1.7 * k + 0.3)} * (3.0 + k);
+    ball.radius = 0.5;
+    ball.restitution = 0.3;
+    scene.balls.push_back(ball);
+  }
+  SceneWorld built = testing::build_world(scene);
+  GasOptions options;
+  options.side = 20.0;
+  options.max_speed = 8.0;
+  expect_contact_by_contact(built, scene, kContactsCompared, tolerances_for(options));
+}
+
 // Between runs a game moves, pushes, removes and adds balls; the World must forget every
 // prediction those changes spoil. Each round changes the scene, then compares contact by contact.
 TEST(WorldReference, ChangesBetweenRunsContactByContact) {

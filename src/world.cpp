@@ -30,9 +30,12 @@ std::string number(double value) { return detail::number_text(value); }
          "a world holds at most " + std::to_string(detail::EventQueue::kMaxBalls) + " balls");
 }
 
-// A drag whose coordinates round coarser than this fraction of the ball's radius is swept twice
-// (set_position).
+// A drag whose coordinates round coarser than this fraction of the ball's radius is swept again
+// from nearer its end (set_position).
 constexpr double kFineDrag = 0x1p-30;
+// The most sweeps of one drag (each divides the distance left by about 10¹⁴: a few do for any
+// drag in the double range).
+constexpr int kMaxDragStages = 64;
 
 // Events name a wall in 30 bits (event_queue.hpp).
 void require_room_for_a_wall(const char* function, const char* argument, std::size_t walls) {
@@ -467,16 +470,21 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
         periodic ? from + w.minimum_image(w.wrap_into_cell(position) - from) : position;
     detail::DragStop first = w.sweep_drag(slot, from, end);
     // A long drag finds its touch only to the rounding of its own coordinates (10³ for a drag
-    // from 10¹⁸): a second sweep from a little short of it, where the coordinates are those of
-    // the obstacle, finds it to theirs. It starts before the true touch, so on a free place.
-    const double resolution =
-        8.0 * std::numeric_limits<double>::epsilon() *
-        std::max({std::abs(from.x), std::abs(from.y), std::abs(end.x), std::abs(end.y)});
-    const double swept = length(first.swept - from);
-    const double back = 4.0 * resolution;
-    if (first.touched && resolution > kFineDrag * w.radius_of(slot) && swept > back) {
-      const Vec2 nearer = first.swept - (end - from) * (back / length(end - from));
-      first = w.sweep_drag(slot, nearer, end);
+    // from 10¹⁸), and may miss a touch near its end altogether (rounded to the end): sweeps
+    // again from a little short of the touch, or of the end, where the coordinates are those
+    // of the obstacle, find it to theirs. Each starts before the true touch, so on a free
+    // place.
+    Vec2 start = from;
+    for (int stage = 0; stage < kMaxDragStages; ++stage) {
+      const double resolution =
+          8.0 * std::numeric_limits<double>::epsilon() *
+          std::max({std::abs(start.x), std::abs(start.y), std::abs(end.x), std::abs(end.y)});
+      if (!(resolution > kFineDrag * w.radius_of(slot))) break;
+      const Vec2 reached = first.touched ? first.swept : end;
+      const double back = 4.0 * resolution;
+      if (!(length(reached - start) > back)) break;
+      start = reached - (end - start) * (back / length(end - start));
+      first = w.sweep_drag(slot, start, end);
     }
     // Untouched, it reaches the very place asked for (from + (position − from) need not be it).
     target = first.touched ? first.stop : position;

@@ -532,6 +532,22 @@ TEST(WorldFuzzFound, DragFromFarAwayEndsAtThePlaceAskedOrTouching) {
   }
 }
 
+// Found by the world fuzzer (session 5): a ball 4.5·10²⁵ away dragged with nearest_free to a
+// place where it overlaps a segment by most of its radius landed there: its touch, 10⁻²⁴ of the
+// way short of the end, rounded to the end itself, so the first sweep saw no touch. Untouched
+// but coarse, a drag is now swept again from a little short of its end.
+TEST(WorldFuzzFound, DragFromFarAwayFindsATouchThatRoundsToItsEnd) {
+  World world;
+  world.add_segment(
+      {{1.0000762951094835, 1.0000762951094835}, {15.703669794766155, 15.76470588235294}});
+  const BallId ball =
+      world.add_ball(extreme_ball({4.4763602269439062e+25, 7.339502392569594e+23}, {}, 2.0, 1.0));
+  const Vec2 placed =
+      world.set_position(ball, {13.411764705882351, 13.411764705882351}, Placement::nearest_free);
+  EXPECT_GT(placed.x, 13.411764705882351);  // stopped on the segment's right, before the target
+  EXPECT_FALSE(world.audit().has_value()) << *world.audit();
+}
+
 // Found by the world fuzzer (UBSan: NaN converted to int in the grid): a lone ball of radius
 // 0.01 in an open world, flown out to 5·10¹⁸ (the world's time at 2.6·10¹⁸). The grid re-planned
 // around it with a margin of two cells, 0.04, below the rounding of such coordinates (1024):

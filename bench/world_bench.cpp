@@ -5,6 +5,8 @@
 //   registered only when the environment variable CAROM_BENCH_WORLD_LARGE is set (to anything).
 // - BM_WorldGameStep: a game's frame, 10⁴ balls of mixed sizes in a closed box stepped at 60
 //   steps per second; the mean step time and the worst.
+// - BM_WorldGameDragStep: the same with the player dragging one ball every frame (set_position
+//   with nearest_free, then set_velocity): the cost of a change between steps.
 // The figures and what they mean: docs/performance.md, "World (issue 3)".
 #include <benchmark/benchmark.h>
 
@@ -158,6 +160,45 @@ void BM_WorldGameStep(benchmark::State& state) {
   state.counters["contacts_per_step"] = static_cast<double>(contacts) / frames;
 }
 BENCHMARK(BM_WorldGameStep)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+// The player's pointer drags ball 0 round a circle of radius kDragRadius at kDragTurnsPerSecond;
+// each frame the ball is dragged to the pointer (stopping at whatever it touches) and given the
+// pointer's velocity, then the world steps. Timed: the drag, the velocity and the step.
+constexpr double kDragRadius = 5.0;
+constexpr double kDragTurnsPerSecond = 0.25;
+
+void BM_WorldGameDragStep(benchmark::State& state) {
+  static World world = [] {
+    World w = game_world();
+    for (int frame = 0; frame < kWarmUpFrames; ++frame) w.step(1.0 / kFramesPerSecond);
+    return w;
+  }();
+  const BallId dragged = world.balls().front();
+  const Vec2 centre = world.position(dragged);
+  constexpr double kTurn = 2.0 * 3.141592653589793 * kDragTurnsPerSecond / kFramesPerSecond;
+  double worst = 0.0;
+  double total = 0.0;
+  int frame = 0;
+  for (auto _ : state) {
+    const double angle = kTurn * frame++;
+    const Vec2 pointer = centre + Vec2{std::cos(angle), std::sin(angle)} * kDragRadius;
+    const Vec2 pointer_velocity =
+        Vec2{-std::sin(angle), std::cos(angle)} * (kDragRadius * kTurn * kFramesPerSecond);
+    const auto start = std::chrono::steady_clock::now();
+    world.set_position(dragged, pointer, Placement::nearest_free);
+    world.set_velocity(dragged, pointer_velocity);
+    world.step(1.0 / kFramesPerSecond);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(seconds);
+    worst = std::max(worst, seconds);
+    total += seconds;
+  }
+  const auto frames = static_cast<double>(state.iterations());
+  state.counters["mean_step_ms"] = total / frames * 1e3;
+  state.counters["worst_step_ms"] = worst * 1e3;
+}
+BENCHMARK(BM_WorldGameDragStep)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace carom::bench

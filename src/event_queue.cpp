@@ -34,6 +34,15 @@ void EventQueue::reset(std::uint32_t count) {
   clear_places(count);
 }
 
+void EventQueue::reserve_slots(std::uint32_t count) {
+  while (events_.size() < count) {
+    events_.push_back({kNever, static_cast<std::uint32_t>(EventKind::cell_crossing) << 30, 0});
+    places_.push_back(Place::none);
+    link_next_.push_back(kNoEvent);
+    link_prev_.push_back(kNoEvent);
+  }
+}
+
 void EventQueue::clear_places(std::uint32_t count) {
   places_.assign(count, Place::none);
   link_next_.assign(count, kNoEvent);

@@ -22,6 +22,8 @@ class EventQueue {
  public:
   // Slots for balls 0 .. count-1, all holding "nothing will happen".
   void reset(std::uint32_t count);
+  // Adds slots holding "nothing will happen" up to balls 0 .. count-1, keeping the others.
+  void reserve_slots(std::uint32_t count);
   // The handle index of the ball at each place, for the order of simultaneous events
   // (world_event.hpp); the caller keeps the array alive and calls this again after it moves.
   void use_handles(const std::uint32_t* handles) { handles_ = handles; }

@@ -200,7 +200,7 @@ BallId World::add_ball(const BallDef& def) {
   ++w.live_count;
   w.largest_radius = std::max(w.largest_radius, def.radius);
   w.grid.insert(slot, w.grid.cell_of(position));
-  w.events_valid = false;
+  w.repredict_changed(slot);
   return w.id_of(slot);
 }
 
@@ -216,7 +216,7 @@ void World::remove_ball(BallId id) {
   generation = generation == std::numeric_limits<std::uint32_t>::max() ? 1 : generation + 1;
   w.free_slots.push_back(w.handle_of[slot]);
   --w.live_count;
-  w.events_valid = false;
+  w.repredict_changed(slot);
 }
 
 void World::reserve(std::size_t count) {
@@ -409,7 +409,34 @@ void World::set_velocity(BallId id, Vec2 velocity) {
   b.local_time = impl_->time;
   b.velocity = velocity;
   ++b.version;
-  impl_->events_valid = false;
+  impl_->repredict_changed(slot);
+}
+
+// The balls filed in the grid's cells within `reach` (and one cell more) of the segment from a
+// to b, in ascending slot order (none, when none is near); {kEveryBall} when that box covers
+// more cells than there are balls (every ball is then the cheaper scan) or there is no grid.
+std::vector<std::uint32_t> World::Impl::balls_near_path(Vec2 a, Vec2 b, double reach) const {
+  if (!grid_valid) return {kEveryBall};
+  const Vec2 cell = grid.cell_size();
+  const Vec2 lower{std::min(a.x, b.x) - reach - cell.x, std::min(a.y, b.y) - reach - cell.y};
+  const Vec2 upper{std::max(a.x, b.x) + reach + cell.x, std::max(a.y, b.y) + reach + cell.y};
+  const std::int32_t x0 = grid.column_of(lower.x);
+  const std::int32_t x1 = grid.column_of(upper.x);
+  const std::int32_t y0 = grid.row_of(lower.y);
+  const std::int32_t y1 = grid.row_of(upper.y);
+  const double cells = (static_cast<double>(x1 - x0) + 1.0) * (static_cast<double>(y1 - y0) + 1.0);
+  if (!(cells <= static_cast<double>(live_count))) return {kEveryBall};
+  std::vector<std::uint32_t> found;
+  for (std::int32_t y = y0; y <= y1; ++y) {
+    for (std::int32_t x = x0; x <= x1; ++x) {
+      for (std::int32_t j = grid.first_ball(grid.index(x, y)); j != detail::kNoBall;
+           j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+        found.push_back(static_cast<std::uint32_t>(j));
+      }
+    }
+  }
+  std::sort(found.begin(), found.end());
+  return found;
 }
 
 detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end) const {
@@ -429,8 +456,8 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
     fraction = hit.t;
     first = {true, hit.t > 0.0 ? touching : from, hit.t > 0.0 ? hit.a_at : from};
   };
-  for (std::uint32_t j = 0; j < balls.size(); ++j) {
-    if (j == slot || !balls[j].alive()) continue;
+  const auto sweep_ball = [&](std::uint32_t j) {
+    if (j == slot || !balls[j].alive()) return;
     const Vec2 nearest = from + minimum_image(position_at(j, time) - from);
     const double reach = radius + radius_of(j);
     for (int kx = -images; kx <= images; ++kx) {
@@ -440,6 +467,17 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
         keep_first(hit, other - hit.normal * reach);
       }
     }
+  };
+  // A short drag (a game's pointer moves a little each frame) sweeps only the balls filed in the
+  // cells around its path, in slot order like the sweep of every ball, so with the same result:
+  // a ball the path can touch has its centre within the two radii of it, and lies in its cell
+  // to a rounding (one more cell of margin covers that).
+  const std::vector<std::uint32_t> nearby = balls_near_path(from, end, radius + largest_radius);
+  const bool every_ball = nearby.size() == 1 && nearby.front() == kEveryBall;
+  if (images == 0 && !every_ball) {
+    for (const std::uint32_t j : nearby) sweep_ball(j);
+  } else {
+    for (std::uint32_t j = 0; j < balls.size(); ++j) sweep_ball(j);
   }
   for (const detail::Wall& wall : walls) {
     const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
@@ -504,7 +542,7 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   b.local_time = w.time;
   ++b.version;
   w.grid.insert(slot, w.grid.cell_of(target));
-  w.events_valid = false;
+  w.repredict_changed(slot);
   return target;
 }
 

@@ -238,6 +238,22 @@ void World::Impl::predict_all() {
   events_valid = true;
 }
 
+// The changed ball is at the world's time (or dead). Its prediction is what a contact's would
+// be: its own slot replaced, and each neighbour's slot given the new contact where it comes
+// first; a neighbour's event with the ball as it was is stale by the ball's version and is
+// re-predicted when it comes up. So every slot again holds an event no later than its ball's
+// true next one.
+void World::Impl::repredict_changed(std::uint32_t ball) {
+  if (!events_valid) return;            // the next run predicts every ball anyway
+  queue.use_handles(handle_of.data());  // add_ball may have moved the array
+  queue.reserve_slots(static_cast<std::uint32_t>(balls.size()));  // a ball added in a new slot
+  if (!balls[ball].alive()) {
+    queue.set(ball, Event{});  // nothing will happen to a removed ball
+    return;
+  }
+  predict(ball);
+}
+
 // Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
 // in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. A
 // contact with another ball earlier than that ball's own slot goes into its slot too, so that

@@ -142,6 +142,8 @@ struct World::Impl {
   [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const;
   // nearest_free's sweep of ball `slot` from `from` to `end` (world.cpp).
   [[nodiscard]] detail::DragStop sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end) const;
+  static constexpr std::uint32_t kEveryBall = 0xFFFFFFFFu;
+  [[nodiscard]] std::vector<std::uint32_t> balls_near_path(Vec2 a, Vec2 b, double reach) const;
   // The first ball or wall that a ball of radius r at p would overlap (ignoring `except`), as a
   // message; empty when the place is free.
   [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;
@@ -184,6 +186,10 @@ struct World::Impl {
   [[nodiscard]] double wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
                                         double largest) const;
   void predict_all();
+  // After a change to one ball between runs (its place or course, or its removal): predicts that
+  // ball alone, when every other ball's pending event is still valid, rather than every ball at
+  // the next run (docs/world.md, "Changing balls between steps").
+  void repredict_changed(std::uint32_t ball);
   // Renumbers the slots cell by cell (docs/world.md, "Memory order"); changes no result.
   void sort_by_cell();
   void predict(std::uint32_t ball);

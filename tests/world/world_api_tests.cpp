@@ -359,6 +359,35 @@ TEST(WorldApi, SetPositionNearestFreeThroughACrowd) {
   EXPECT_GT(cut_short, 100);
 }
 
+// Short drags in a large moving crowd, a step between them: these sweep only the balls in the
+// cells around their paths (a game's pointer, every frame), with the same promises as above.
+TEST(WorldApi, SetPositionNearestFreeShortDragsInALargeMovingCrowd) {
+  World world = box_of_balls(58, 40, 2.0);  // 1600 balls, radii 0.1 to 0.15, pitch 0.5
+  std::mt19937_64 engine(58);
+  std::uniform_real_distribution<double> step(-1.5, 1.5);
+  const std::vector<BallId> ids = world.balls();
+  int cut_short = 0;
+  for (int drag = 0; drag < 400; ++drag) {
+    world.step(0.01);
+    const BallId id = ids[(static_cast<std::size_t>(drag) * 37) % ids.size()];
+    const Vec2 target = world.position(id) + Vec2{step(engine), step(engine)};
+    Vec2 end;
+    ASSERT_NO_THROW(end = world.set_position(id, target, Placement::nearest_free))
+        << "drag " << drag;
+    ASSERT_FALSE(world.audit().has_value()) << "drag " << drag << ": " << *world.audit();
+    if (end == target) continue;
+    ++cut_short;
+    const double r = world.radius(id);
+    double gap = std::min({end.x - r, end.y - r, 20.0 - r - end.x, 20.0 - r - end.y});
+    for (BallId other : ids) {
+      if (other == id) continue;
+      gap = std::min(gap, distance(end, world.position(other)) - r - world.radius(other));
+    }
+    ASSERT_NEAR(gap, 0.0, kTouchTol * 2.0 * r) << "drag " << drag;
+  }
+  EXPECT_GT(cut_short, 200);
+}
+
 // ---- energy and momentum ---------------------------------------------------------------------
 
 TEST(WorldApi, KineticEnergyAndMomentumOfMovableBalls) {

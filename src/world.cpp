@@ -413,10 +413,11 @@ void World::set_velocity(BallId id, Vec2 velocity) {
 }
 
 // The balls filed in the grid's cells within `reach` (and one cell more) of the segment from a
-// to b, in ascending slot order (none, when none is near); {kEveryBall} when that box covers
-// more cells than there are balls (every ball is then the cheaper scan) or there is no grid.
-std::vector<std::uint32_t> World::Impl::balls_near_path(Vec2 a, Vec2 b, double reach) const {
-  if (!grid_valid) return {kEveryBall};
+// to b, in ascending slot order; nothing when that box covers more cells than there are balls
+// (every ball is then the cheaper scan) or there is no grid.
+std::optional<std::vector<std::uint32_t>> World::Impl::balls_near_path(Vec2 a, Vec2 b,
+                                                                       double reach) const {
+  if (!grid_valid) return std::nullopt;
   const Vec2 cell = grid.cell_size();
   const Vec2 lower{std::min(a.x, b.x) - reach - cell.x, std::min(a.y, b.y) - reach - cell.y};
   const Vec2 upper{std::max(a.x, b.x) + reach + cell.x, std::max(a.y, b.y) + reach + cell.y};
@@ -425,7 +426,7 @@ std::vector<std::uint32_t> World::Impl::balls_near_path(Vec2 a, Vec2 b, double r
   const std::int32_t y0 = grid.row_of(lower.y);
   const std::int32_t y1 = grid.row_of(upper.y);
   const double cells = (static_cast<double>(x1 - x0) + 1.0) * (static_cast<double>(y1 - y0) + 1.0);
-  if (!(cells <= static_cast<double>(live_count))) return {kEveryBall};
+  if (!(cells <= static_cast<double>(live_count))) return std::nullopt;
   std::vector<std::uint32_t> found;
   for (std::int32_t y = y0; y <= y1; ++y) {
     for (std::int32_t x = x0; x <= x1; ++x) {
@@ -472,10 +473,10 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
   // cells around its path, in slot order like the sweep of every ball, so with the same result:
   // a ball the path can touch has its centre within the two radii of it, and lies in its cell
   // to a rounding (one more cell of margin covers that).
-  const std::vector<std::uint32_t> nearby = balls_near_path(from, end, radius + largest_radius);
-  const bool every_ball = nearby.size() == 1 && nearby.front() == kEveryBall;
-  if (images == 0 && !every_ball) {
-    for (const std::uint32_t j : nearby) sweep_ball(j);
+  const auto nearby =
+      images == 0 ? balls_near_path(from, end, radius + largest_radius) : std::nullopt;
+  if (nearby) {
+    for (const std::uint32_t j : *nearby) sweep_ball(j);
   } else {
     for (std::uint32_t j = 0; j < balls.size(); ++j) sweep_ball(j);
   }

@@ -142,8 +142,10 @@ struct World::Impl {
   [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const;
   // nearest_free's sweep of ball `slot` from `from` to `end` (world.cpp).
   [[nodiscard]] detail::DragStop sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end) const;
-  static constexpr std::uint32_t kEveryBall = 0xFFFFFFFFu;
-  [[nodiscard]] std::vector<std::uint32_t> balls_near_path(Vec2 a, Vec2 b, double reach) const;
+  // The balls a drag from a to b might touch, from the grid (world.cpp); nothing where a scan of
+  // every ball is cheaper.
+  [[nodiscard]] std::optional<std::vector<std::uint32_t>> balls_near_path(Vec2 a, Vec2 b,
+                                                                          double reach) const;
   // The first ball or wall that a ball of radius r at p would overlap (ignoring `except`), as a
   // message; empty when the place is free.
   [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;

@@ -135,29 +135,49 @@ World game_world() {
 // One iteration is one frame, world.step(1/60), timed by hand with std::chrono::steady_clock:
 // the benchmark's time is the mean frame, the counter worst_step_ms the slowest frame of the run,
 // contacts_per_step the mean number of contacts a frame resolves.
-void BM_WorldGameStep(benchmark::State& state) {
-  static World world = [] {
-    World w = game_world();
-    for (int frame = 0; frame < kWarmUpFrames; ++frame) w.step(1.0 / kFramesPerSecond);
-    return w;
-  }();
-  double worst = 0.0;
-  double total = 0.0;
-  std::uint64_t contacts = 0;
-  for (auto _ : state) {
+World warmed_game_world() {
+  World world = game_world();
+  for (int frame = 0; frame < kWarmUpFrames; ++frame) world.step(1.0 / kFramesPerSecond);
+  return world;
+}
+
+// The frames' times, each handed to the benchmark as it is measured; the mean and the worst.
+class FrameTimes {
+ public:
+  explicit FrameTimes(benchmark::State& state) : state_(state) {}
+  template <class Frame>
+  void time(Frame&& frame) {
     const auto start = std::chrono::steady_clock::now();
-    world.step(1.0 / kFramesPerSecond);
+    frame();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    state.SetIterationTime(seconds);
-    worst = std::max(worst, seconds);
-    total += seconds;
+    state_.SetIterationTime(seconds);
+    worst_ = std::max(worst_, seconds);
+    total_ += seconds;
+  }
+  void report() const {
+    const auto frames = static_cast<double>(state_.iterations());
+    state_.counters["mean_step_ms"] = total_ / frames * 1e3;
+    state_.counters["worst_step_ms"] = worst_ * 1e3;
+  }
+
+ private:
+  benchmark::State& state_;
+  double worst_ = 0.0;
+  double total_ = 0.0;
+};
+
+void BM_WorldGameStep(benchmark::State& state) {
+  static World world = warmed_game_world();
+  FrameTimes times(state);
+  std::uint64_t contacts = 0;
+  for (auto _ : state) {
+    times.time([] { world.step(1.0 / kFramesPerSecond); });
     contacts += world.contacts().size();
   }
-  const auto frames = static_cast<double>(state.iterations());
-  state.counters["mean_step_ms"] = total / frames * 1e3;
-  state.counters["worst_step_ms"] = worst * 1e3;
-  state.counters["contacts_per_step"] = static_cast<double>(contacts) / frames;
+  times.report();
+  state.counters["contacts_per_step"] =
+      static_cast<double>(contacts) / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_WorldGameStep)->UseManualTime()->Unit(benchmark::kMillisecond);
 
@@ -168,35 +188,24 @@ constexpr double kDragRadius = 5.0;
 constexpr double kDragTurnsPerSecond = 0.25;
 
 void BM_WorldGameDragStep(benchmark::State& state) {
-  static World world = [] {
-    World w = game_world();
-    for (int frame = 0; frame < kWarmUpFrames; ++frame) w.step(1.0 / kFramesPerSecond);
-    return w;
-  }();
+  static World world = warmed_game_world();
   const BallId dragged = world.balls().front();
   const Vec2 centre = world.position(dragged);
   constexpr double kTurn = 2.0 * 3.141592653589793 * kDragTurnsPerSecond / kFramesPerSecond;
-  double worst = 0.0;
-  double total = 0.0;
+  FrameTimes times(state);
   int frame = 0;
   for (auto _ : state) {
     const double angle = kTurn * frame++;
     const Vec2 pointer = centre + Vec2{std::cos(angle), std::sin(angle)} * kDragRadius;
     const Vec2 pointer_velocity =
         Vec2{-std::sin(angle), std::cos(angle)} * (kDragRadius * kTurn * kFramesPerSecond);
-    const auto start = std::chrono::steady_clock::now();
-    world.set_position(dragged, pointer, Placement::nearest_free);
-    world.set_velocity(dragged, pointer_velocity);
-    world.step(1.0 / kFramesPerSecond);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    state.SetIterationTime(seconds);
-    worst = std::max(worst, seconds);
-    total += seconds;
+    times.time([&] {
+      world.set_position(dragged, pointer, Placement::nearest_free);
+      world.set_velocity(dragged, pointer_velocity);
+      world.step(1.0 / kFramesPerSecond);
+    });
   }
-  const auto frames = static_cast<double>(state.iterations());
-  state.counters["mean_step_ms"] = total / frames * 1e3;
-  state.counters["worst_step_ms"] = worst * 1e3;
+  times.report();
 }
 BENCHMARK(BM_WorldGameDragStep)->UseManualTime()->Unit(benchmark::kMillisecond);
 

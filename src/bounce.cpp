@@ -10,6 +10,15 @@ namespace {
 // 1/m, with kImmovable giving exactly 0.
 double inverse_mass(double mass) { return mass == kImmovable ? 0.0 : 1.0 / mass; }
 
+// The arguments of a bounce off a static wall, named after `function` when one is bad.
+void validate_wall_bounce(const char* function, Vec2 velocity, double mass, Vec2 normal,
+                          double restitution) {
+  detail::require_finite(function, "velocity", velocity);
+  detail::require_positive(function, "mass", mass);
+  detail::require_nonzero(function, "normal", normal);
+  detail::require_restitution(function, "restitution", restitution);
+}
+
 }  // namespace
 
 BounceResult bounce(Vec2 velocity_a, double mass_a, Vec2 velocity_b, double mass_b, Vec2 normal,
@@ -50,11 +59,7 @@ BounceResult bounce_equal_mass(Vec2 velocity_a, Vec2 velocity_b, Vec2 line_of_ce
 }
 
 WallBounceResult bounce_off_static(Vec2 velocity, double mass, Vec2 normal, double restitution) {
-  constexpr const char* kFunction = "bounce_off_static";
-  detail::require_finite(kFunction, "velocity", velocity);
-  detail::require_positive(kFunction, "mass", mass);
-  detail::require_nonzero(kFunction, "normal", normal);
-  detail::require_restitution(kFunction, "restitution", restitution);
+  validate_wall_bounce("bounce_off_static", velocity, mass, normal, restitution);
 
   const Vec2 n = normalized(normal);
   const double approach_speed = dot(velocity, n);
@@ -64,11 +69,7 @@ WallBounceResult bounce_off_static(Vec2 velocity, double mass, Vec2 normal, doub
 }
 
 WallBounceResult bounce_inside_arc(Vec2 velocity, double mass, Vec2 normal, double restitution) {
-  constexpr const char* kFunction = "bounce_inside_arc";
-  detail::require_finite(kFunction, "velocity", velocity);
-  detail::require_positive(kFunction, "mass", mass);
-  detail::require_nonzero(kFunction, "normal", normal);
-  detail::require_restitution(kFunction, "restitution", restitution);
+  validate_wall_bounce("bounce_inside_arc", velocity, mass, normal, restitution);
   const detail::BowlBounce out =
       detail::bounce_inside_arc(velocity, normalized(normal), restitution);
   return {out.velocity, out.normal_speed_change * mass};

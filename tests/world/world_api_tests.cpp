@@ -329,6 +329,25 @@ TEST(WorldApi, SetPositionNearestFreeStopsWhereItFirstTouches) {
   EXPECT_EQ(world.set_position(dragged, {0.0, -4.0}, Placement::nearest_free), (Vec2{0.0, -4.0}));
 }
 
+// Drags ball `id` of a box [0, side]² with nearest_free: never refused, never leaving an
+// overlap, and, when cut short (counted), touching something: the nearest ball or wall one
+// contact distance away, to 1e-9 of it.
+void drag_free_or_touching(World& world, BallId id, Vec2 target, double side, int drag,
+                           int& cut_short) {
+  Vec2 end;
+  ASSERT_NO_THROW(end = world.set_position(id, target, Placement::nearest_free)) << "drag " << drag;
+  ASSERT_FALSE(world.audit().has_value()) << "drag " << drag << ": " << *world.audit();
+  if (end == target) return;
+  ++cut_short;
+  const double r = world.radius(id);
+  double gap = std::min({end.x - r, end.y - r, side - r - end.x, side - r - end.y});
+  for (const BallId other : world.balls()) {
+    if (other == id) continue;
+    gap = std::min(gap, distance(end, world.position(other)) - r - world.radius(other));
+  }
+  ASSERT_NEAR(gap, 0.0, kTouchTol * 2.0 * r) << "drag " << drag;
+}
+
 // Drags at random through a crowd: nearest_free never refuses, never leaves an overlap, and a
 // drag cut short ends touching something (a ball or a wall) to 1e-9 of the contact distance.
 TEST(WorldApi, SetPositionNearestFreeThroughACrowd) {
@@ -341,20 +360,7 @@ TEST(WorldApi, SetPositionNearestFreeThroughACrowd) {
   for (int drag = 0; drag < 300; ++drag) {
     const BallId id = ids[static_cast<std::size_t>(drag) % ids.size()];
     const Vec2 target{coordinate(engine), coordinate(engine)};
-    Vec2 end;
-    ASSERT_NO_THROW(end = world.set_position(id, target, Placement::nearest_free))
-        << "drag " << drag;
-    ASSERT_FALSE(world.audit().has_value()) << "drag " << drag << ": " << *world.audit();
-    if (end == target) continue;
-    ++cut_short;
-    // Touching: the nearest ball or wall is one contact distance away.
-    const double r = world.radius(id);
-    double gap = std::min({end.x - r, end.y - r, kSide - r - end.x, kSide - r - end.y});
-    for (BallId other : ids) {
-      if (other == id) continue;
-      gap = std::min(gap, distance(end, world.position(other)) - r - world.radius(other));
-    }
-    ASSERT_NEAR(gap, 0.0, kTouchTol * 2.0 * r) << "drag " << drag;
+    ASSERT_NO_FATAL_FAILURE(drag_free_or_touching(world, id, target, kSide, drag, cut_short));
   }
   EXPECT_GT(cut_short, 100);
 }
@@ -371,19 +377,7 @@ TEST(WorldApi, SetPositionNearestFreeShortDragsInALargeMovingCrowd) {
     world.step(0.01);
     const BallId id = ids[(static_cast<std::size_t>(drag) * 37) % ids.size()];
     const Vec2 target = world.position(id) + Vec2{step(engine), step(engine)};
-    Vec2 end;
-    ASSERT_NO_THROW(end = world.set_position(id, target, Placement::nearest_free))
-        << "drag " << drag;
-    ASSERT_FALSE(world.audit().has_value()) << "drag " << drag << ": " << *world.audit();
-    if (end == target) continue;
-    ++cut_short;
-    const double r = world.radius(id);
-    double gap = std::min({end.x - r, end.y - r, 20.0 - r - end.x, 20.0 - r - end.y});
-    for (BallId other : ids) {
-      if (other == id) continue;
-      gap = std::min(gap, distance(end, world.position(other)) - r - world.radius(other));
-    }
-    ASSERT_NEAR(gap, 0.0, kTouchTol * 2.0 * r) << "drag " << drag;
+    ASSERT_NO_FATAL_FAILURE(drag_free_or_touching(world, id, target, 20.0, drag, cut_short));
   }
   EXPECT_GT(cut_short, 200);
 }

@@ -145,7 +145,6 @@ WORLD_FUZZ_SMOKE_RUNS ?= 12000
 WORLD_FUZZ_SMOKE_SECONDS ?= 60
 WORLD_FUZZ_FLAGS := -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=build/fuzz/
 .PHONY: fuzz-world-build fuzz-world-smoke fuzz-world
-fuzz-smoke: fuzz-world-smoke
 fuzz: fuzz-world
 
 fuzz-world-build:
@@ -173,20 +172,26 @@ fuzz-build:
 	cmake --build --preset fuzz --target carom_scene_fuzz
 
 # New inputs the fuzzer finds go to build/fuzz/corpus; the committed seeds stay as they are.
-# make test's bounded runs: both targets built at once, then both fuzzers side by side (each is
-# one process on one core), the time-of-impact one's log shown when it ends.
+# make test's bounded runs: the three targets built at once, then the three fuzzers side by side
+# (each is one process on one core; the world's run is a fixed number of inputs, the other two
+# a fixed time), the logs of the two in the background shown when they end.
 fuzz-smoke:
 	cmake --preset fuzz >/dev/null
-	cmake --build --preset fuzz --target carom_toi_fuzz carom_scene_fuzz
-	mkdir -p build/fuzz/corpus/toi build/fuzz/corpus/scene
+	cmake --build --preset fuzz --target carom_toi_fuzz carom_scene_fuzz carom_world_fuzz
+	mkdir -p build/fuzz/corpus/toi build/fuzz/corpus/scene build/fuzz/corpus/world
+	$(WORLD_FUZZ) -seed=$(FUZZ_SMOKE_SEED) -runs=$(WORLD_FUZZ_SMOKE_RUNS) \
+	  -max_total_time=$(WORLD_FUZZ_SMOKE_SECONDS) $(WORLD_FUZZ_FLAGS) \
+	  build/fuzz/corpus/world tests/fuzz/corpus/world > build/fuzz/world-smoke.log 2>&1 &
+	world_fuzz=$$!
 	$(TOI_FUZZ) -seed=$(FUZZ_SMOKE_SEED) -max_total_time=$(FUZZ_SMOKE_SECONDS) -print_final_stats=1 \
 	  -artifact_prefix=build/fuzz/ build/fuzz/corpus/toi tests/fuzz/corpus/toi > build/fuzz/toi-smoke.log 2>&1 &
 	toi_fuzz=$$!
 	$(FUZZER) -seed=$(FUZZ_SMOKE_SEED) -max_total_time=$(FUZZ_SMOKE_SECONDS) -timeout=10 \
 	  -rss_limit_mb=2048 -artifact_prefix=build/fuzz/ build/fuzz/corpus/scene tests/fuzz/corpus/scene
 	toi_status=0; wait $$toi_fuzz || toi_status=$$?
-	cat build/fuzz/toi-smoke.log
-	exit $$toi_status
+	world_status=0; wait $$world_fuzz || world_status=$$?
+	cat build/fuzz/toi-smoke.log build/fuzz/world-smoke.log
+	[ $$toi_status = 0 ] && exit $$world_status || exit $$toi_status
 
 fuzz: fuzz-build
 	mkdir -p build/fuzz/corpus/scene

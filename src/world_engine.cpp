@@ -76,6 +76,12 @@ constexpr double kResolvableMotion = 0x1p-10;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
+// A ball sped up by moving immovable balls this many times in a row (with no contact between
+// that slowed it or met a movable ball) is being crushed: caught between a moving immovable
+// ball and a wall, it gains twice the mover's speed at each bounce, infinitely often before the
+// gap closes (docs/world.md, "Known limits"). A paddle hitting a ball in a game does so a few
+// times a second, and the ball meets other things between.
+constexpr std::uint32_t kCrushBounces = 1u << 18;
 
 }  // namespace
 
@@ -406,6 +412,7 @@ void World::Impl::predict(std::uint32_t ball) {
 std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t max_contacts) {
   contacts.clear();
   stopped = false;
+  crushed_ball = kNoCrush;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
   if (!events_valid) predict_all();
   queue.use_handles(handle_of.data());  // add_ball may have moved the array
@@ -429,6 +436,7 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;
     const bool contact = process(event);
+    if (crushed_ball != kNoCrush) refuse_crushed(function, crushed_ball);
     if (time != instant) {
       instant = time;
       at_instant = 0;
@@ -549,6 +557,8 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   advance(j, t);
   BallSlot& a = balls[i];
   BallSlot& b = balls[j];
+  const Vec2 before_i = a.velocity;
+  const Vec2 before_j = b.velocity;
   const Vec2 between = minimum_image(b.position - a.position);
   const Vec2 normal = between == Vec2{} ? normalized(a.velocity - b.velocity) : normalized(between);
   const double approach = dot(a.velocity - b.velocity, normal);
@@ -566,12 +576,44 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     }
     if (contact_wanted()) record_ball_ball(i, j, t, between, normal, approach, impulse);
     resolved = true;
+    if (crushing(i, j, before_i, before_j)) crushed_ball = movable(i) ? i : j;
   }
   ++a.version;
   ++b.version;
   predict(i);
   predict(j);
   return resolved;
+}
+
+bool World::Impl::crushing(std::uint32_t i, std::uint32_t j, Vec2 before_i, Vec2 before_j) {
+  const bool i_moves = movable(i);
+  const bool j_moves = movable(j);
+  if (i_moves && j_moves) {  // two movable balls: neither is caught against a mover
+    infos[i].pumped = 0;
+    infos[j].pumped = 0;
+    return false;
+  }
+  const std::uint32_t ball = i_moves ? i : j;
+  const Vec2 mover_velocity = i_moves ? balls[j].velocity : balls[i].velocity;
+  if (mover_velocity == Vec2{}) return false;  // an immovable ball at rest: a post, like a wall
+  const Vec2 before = i_moves ? before_i : before_j;
+  std::uint32_t& pumped = infos[ball].pumped;
+  if (length_squared(balls[ball].velocity) > length_squared(before)) {
+    return ++pumped >= kCrushBounces;
+  }
+  pumped = 0;
+  return false;
+}
+
+void World::Impl::refuse_crushed(const char* function, std::uint32_t ball) const {
+  throw InvalidArgument(
+      function, "world",
+      "t = " + detail::number_text(time) + " (ball " + std::to_string(handle_of[ball]) + ")",
+      "has a ball crushed: a moving immovable ball closes on it against a wall or another "
+      "immovable ball, so it bounces ever faster, infinitely often before the gap closes (" +
+          std::to_string(kCrushBounces) +
+          " speed-ups in a row); stop the immovable ball first (docs/world.md, \"Known "
+          "limits\")");
 }
 
 void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between,

@@ -50,7 +50,11 @@ static_assert(sizeof(BallSlot) == 48);
 struct BallInfo {
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
+  // Bounces off moving immovable balls in a row that sped the ball up (run's crush detection;
+  // it fills what was padding, and is not saved).
+  std::uint32_t pumped = 0;
 };
+static_assert(sizeof(BallInfo) == 16);
 
 // set_position(nearest_free)'s sweep: whether the ball touched something on its way, where it
 // then stops, and where the sweep itself put its centre at that touch.
@@ -215,6 +219,12 @@ struct World::Impl {
   [[noreturn]] void refuse_endless(const char* function, std::uint64_t count,
                                    const detail::Event& last) const;
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
+  // Counts a contact of balls i and j (velocities before it given) towards the crush rule; true
+  // when a ball has now been sped up by moving immovable balls too many times in a row.
+  [[nodiscard]] bool crushing(std::uint32_t i, std::uint32_t j, Vec2 before_i, Vec2 before_j);
+  [[noreturn]] void refuse_crushed(const char* function, std::uint32_t ball) const;
+  std::uint32_t crushed_ball = kNoCrush;  // set by resolve_ball_ball, refused by run
+  static constexpr std::uint32_t kNoCrush = 0xFFFFFFFFu;
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);

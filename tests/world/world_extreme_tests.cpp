@@ -234,6 +234,46 @@ TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
   EXPECT_EQ(world.time(), 0.0);
 }
 
+// ---- crushing ---------------------------------------------------------------------------------
+
+// A box world [0, 20]² with a ball of radius 0.5 resting at (2, 10) and an immovable ball of
+// radius 1 at (6, 10) moving at `mover_velocity`.
+struct CrushScene {
+  World world = extreme_box(20.0);
+  BallId ball;
+  BallId mover;
+  explicit CrushScene(Vec2 mover_velocity) {
+    ball = world.add_ball(extreme_ball({2.0, 10.0}, {}, 0.5, 1.0));
+    mover = world.add_ball(extreme_ball({6.0, 10.0}, mover_velocity, 1.0, kImmovable));
+  }
+};
+
+// The mover closes on the wall at speed 1 with the ball between: the ball gains 2 at each
+// bounce, infinitely often before t = 4, when the gap would close. step used never to return.
+TEST(WorldExtreme, BallCrushedByAMovingImmovableBallIsRefusedNotHung) {
+  CrushScene scene({-1.0, 0.0});
+  alarm(60);  // a hang ends as a failure
+  expect_endless_step_refused(scene.world, 5.0, "crushed");
+  EXPECT_LT(scene.world.time(), 4.0);
+  // The caught ball is by then bouncing at 2¹⁹ in a gap of 3·10⁻⁶: stopped, with the mover
+  // stopped too, the world goes on.
+  EXPECT_GT(length(scene.world.velocity(scene.ball)), 1e5);
+  scene.world.set_velocity(scene.mover, {});
+  scene.world.set_velocity(scene.ball, {});
+  EXPECT_NO_THROW(scene.world.step(1.0));
+  alarm(0);
+  EXPECT_FALSE(scene.world.audit().has_value()) << *scene.world.audit();
+}
+
+// Receding at speed 1, the mover slows the ball by 2 at each bounce: no crush.
+TEST(WorldExtreme, BallBetweenAWallAndARecedingImmovableBallIsNoCrush) {
+  CrushScene scene({1.0, 0.0});
+  scene.world.set_velocity(scene.ball, {9.0, 0.0});
+  EXPECT_NO_THROW(scene.world.step(10.0));
+  EXPECT_GT(scene.world.collision_count(), 4u);
+  EXPECT_FALSE(scene.world.audit().has_value()) << *scene.world.audit();
+}
+
 // ---- points as walls -------------------------------------------------------------------------
 
 // A ball of radius 0.5 at (-3, 0.3) moving at (1, 0) meets a point at the origin when it is 0.4

@@ -265,9 +265,11 @@ class Harness {
     // the periodic cell, whose grid covers the whole of it.
     if (def_.boundary == Boundary::open) def.radius = std::max(def.radius, kSmallestOpenRadius);
     def.mass = in_.pick(kMasses);
-    // A moving immovable ball can squeeze a ball against a wall or another immovable ball: the
-    // squeezed ball then bounces ever faster, infinitely often before the gap closes (no
-    // resolution exists). Valid input the fuzzer cannot bound, so immovable balls stay at rest.
+    // A moving immovable ball does work on the balls it meets without limit: a crushed ball is
+    // refused after 2^18 speed-ups
+    // (WorldExtreme.BallCrushedByAMovingImmovableBallIsRefusedNotHung), but one driving a periodic
+    // gas heats it ever faster, more contacts each time unit (tried in session 5: inputs of 26 s).
+    // Valid input the fuzzer cannot bound, so immovable balls stay at rest.
     if (def.mass == carom::kImmovable) def.velocity = {};
     const std::uint8_t r = in_.byte();
     if (r % 4 == 1) {

@@ -436,7 +436,6 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     if (!(event.time <= end) || event.time == kInfinity) break;
     time = event.time;
     const bool contact = process(event);
-    if (crushed_ball != kNoCrush) refuse_crushed(function, crushed_ball);
     if (time != instant) {
       instant = time;
       at_instant = 0;
@@ -454,6 +453,7 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     without_contact = 0;
     ++resolved;
     ++collisions;
+    if (crushed_ball != kNoCrush) refuse_crushed(function, crushed_ball);
     if (time_too_coarse(event)) refuse_stalled(function, event);
     if (moved_measurably(event, time - motion_time)) {
       motion_time = time;

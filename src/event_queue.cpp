@@ -27,16 +27,13 @@ constexpr std::size_t kMedianSample = 4096;
 }  // namespace
 
 void EventQueue::reset(std::uint32_t count) {
-  events_.resize(count);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    events_[i] = {kNever, static_cast<std::uint32_t>(EventKind::cell_crossing) << 30, 0};
-  }
+  events_.assign(count, kNothing);
   clear_places(count);
 }
 
 void EventQueue::reserve_slots(std::uint32_t count) {
   while (events_.size() < count) {
-    events_.push_back({kNever, static_cast<std::uint32_t>(EventKind::cell_crossing) << 30, 0});
+    events_.push_back(kNothing);
     places_.push_back(Place::none);
     link_next_.push_back(kNoEvent);
     link_prev_.push_back(kNoEvent);

@@ -57,6 +57,9 @@ class EventQueue {
     [[nodiscard]] std::uint32_t partner() const { return partner_and_kind & (kMaxBalls - 1); }
     [[nodiscard]] EventKind kind() const { return static_cast<EventKind>(partner_and_kind >> 30); }
   };
+  // An empty slot's entry: "nothing will happen" (at +infinity, never in a list or the heap).
+  static constexpr Pending kNothing{kNever,
+                                    static_cast<std::uint32_t>(EventKind::cell_crossing) << 30, 0};
   // A heap member: the event without its partner's version but with its owner, 16 bytes, so
   // that sifting compares without reaching into events_.
   struct Entry {

@@ -27,6 +27,13 @@ Vec2 nearest_point(const Wall& wall, Vec2 p) {
   return wall.segment.a + along * fraction;
 }
 
+bool inside_arc(const Wall& wall, Vec2 p) {
+  if (!wall.is_arc) return false;
+  const Vec2 out = p - wall.frame.center;
+  const double distance = length(out);
+  return distance > 0.0 && distance < wall.frame.radius && wall.frame.contains(out / distance);
+}
+
 Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity, double horizon) {
   return wall.is_arc ? time_of_impact_ball_arc(ball, velocity, wall.arc, horizon)
                      : time_of_impact_ball_segment(ball, velocity, wall.segment, horizon);

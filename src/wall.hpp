@@ -21,6 +21,11 @@ struct Wall {
 // The point of the wall nearest to p.
 [[nodiscard]] Vec2 nearest_point(const Wall& wall, Vec2 p);
 
+// Whether a ball centred at p meets the wall on the inside of an arc (rather than its outside,
+// an end point or a segment): p is inside the arc's circle and its nearest point of the whole
+// circle, straight out from the centre, lies within the span.
+[[nodiscard]] bool inside_arc(const Wall& wall, Vec2 p);
+
 // The first approaching contact of a ball moving with velocity within [0, horizon].
 [[nodiscard]] Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity,
                                     double horizon);

@@ -634,16 +634,6 @@ void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, V
   record(contact);
 }
 
-// Whether a ball centred at p touches `wall` on the inside of an arc (rather than its outside,
-// an end point or a segment): p is inside the arc's circle and its nearest point of the full
-// circle, straight out from the centre, lies within the span.
-bool World::Impl::inside_arc(const detail::Wall& wall, Vec2 p) {
-  if (!wall.is_arc) return false;
-  const Vec2 out = p - wall.frame.center;
-  const double distance = length(out);
-  return distance > 0.0 && distance < wall.frame.radius && wall.frame.contains(out / distance);
-}
-
 bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t) {
   advance(i, t);
   BallSlot& a = balls[i];
@@ -656,19 +646,20 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   const double approach = dot(a.velocity, normal);
   // Inside a bowl a ball moving along the wall (approach 0) is a contact too (the query reports
   // it), answered by bounce_inside_arc's turn (docs/world.md, "A ball in a bowl").
-  const bool in_bowl = inside_arc(walls[wall], a.position);
+  const bool in_bowl = detail::inside_arc(walls[wall], a.position);
   bool resolved = false;
   if (approach > 0.0 || (in_bowl && now.hit)) {
     const double restitution =
         def.collapse_time > 0.0 && last_contact_times[i] > t - def.collapse_time
             ? 1.0
             : restitution_of(i);
-    double speed_change = (1.0 + restitution) * approach;
+    double speed_change = 0.0;
     if (in_bowl) {
       const detail::BowlBounce bounce = detail::bounce_inside_arc(a.velocity, normal, restitution);
       a.velocity = bounce.velocity;
       speed_change = bounce.normal_speed_change;
     } else {
+      speed_change = (1.0 + restitution) * approach;
       a.velocity -= normal * speed_change;
     }
     if (def.collapse_time > 0.0) last_contact_times[i] = t;

@@ -105,6 +105,9 @@ struct World::Impl {
   // Whether some ball's restitution differs from def.restitution; until then contacts need not
   // read the balls' infos (a cache miss each in a large world).
   bool mixed_restitution = false;
+  // A ball that the latest contact found crushed (resolve_ball_ball), refused by run.
+  static constexpr std::uint32_t kNoCrush = 0xFFFFFFFFu;
+  std::uint32_t crushed_ball = kNoCrush;
 
   // ---- handles ----
   [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
@@ -223,12 +226,9 @@ struct World::Impl {
   // when a ball has now been sped up by moving immovable balls too many times in a row.
   [[nodiscard]] bool crushing(std::uint32_t i, std::uint32_t j, Vec2 before_i, Vec2 before_j);
   [[noreturn]] void refuse_crushed(const char* function, std::uint32_t ball) const;
-  std::uint32_t crushed_ball = kNoCrush;  // set by resolve_ball_ball, refused by run
-  static constexpr std::uint32_t kNoCrush = 0xFFFFFFFFu;
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
-  [[nodiscard]] static bool inside_arc(const detail::Wall& wall, Vec2 p);
   void cross_cell(std::uint32_t ball, std::uint32_t side, double t);
   [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
 };

@@ -196,7 +196,6 @@ BallId World::add_ball(const BallDef& def) {
     w.last_contact_times[slot] = -std::numeric_limits<double>::infinity();
   }
   info.user_data = def.user_data;
-  info.pumped = 0;
   ++b.version;
   ++w.live_count;
   w.largest_radius = std::max(w.largest_radius, def.radius);
@@ -410,7 +409,6 @@ void World::set_velocity(BallId id, Vec2 velocity) {
   b.local_time = impl_->time;
   b.velocity = velocity;
   ++b.version;
-  impl_->infos[slot].pumped = 0;  // a crush counts speed-ups in a row, with no change between
   impl_->repredict_changed(slot);
 }
 

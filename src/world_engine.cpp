@@ -9,6 +9,7 @@
 #include "bowl_bounce.hpp"
 #include "carom/error.hpp"
 #include "circle_crossing.hpp"
+#include "contact_pace.hpp"
 #include "pair_batch.hpp"
 #include "permute.hpp"
 #include "validate.hpp"
@@ -76,12 +77,6 @@ constexpr double kResolvableMotion = 0x1p-10;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
-// A ball sped up by moving immovable balls this many times in a row (with no contact between
-// that slowed it or met a movable ball) is being crushed: caught between a moving immovable
-// ball and a wall, it gains twice the mover's speed at each bounce, infinitely often before the
-// gap closes (docs/world.md, "Known limits"). A paddle hitting a ball in a game does so a few
-// times a second, and the ball meets other things between.
-constexpr std::uint32_t kCrushBounces = 1u << 18;
 
 }  // namespace
 
@@ -412,7 +407,7 @@ void World::Impl::predict(std::uint32_t ball) {
 std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t max_contacts) {
   contacts.clear();
   stopped = false;
-  crushed_ball = kNoCrush;
+  mover_met = false;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
   if (!events_valid) predict_all();
   queue.use_handles(handle_of.data());  // add_ball may have moved the array
@@ -430,6 +425,8 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
   std::uint64_t contacts_without_motion = 0;
   double instant = -kInfinity;
   std::uint64_t at_instant = 0;
+  // Runs that would never end the other way: contacts coming ever faster, each with motion.
+  detail::ContactPace pace;
   for (;;) {
     if (++events_since_sort > kSortEvents * live_count + kSortMinEvents) sort_by_cell();
     const Event event = queue.top();
@@ -453,8 +450,8 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     without_contact = 0;
     ++resolved;
     ++collisions;
-    if (crushed_ball != kNoCrush) refuse_crushed(function, crushed_ball);
     if (time_too_coarse(event)) refuse_stalled(function, event);
+    if (pace.piling_up(time)) refuse_piling_up(function, event);
     if (moved_measurably(event, time - motion_time)) {
       motion_time = time;
       contacts_without_motion = 0;
@@ -502,12 +499,49 @@ void World::Impl::refuse_endless(const char* function, std::uint64_t count,
   // motion between events is then lost to rounding. Otherwise the balls are jammed.
   const double time_step = std::nextafter(time, kInfinity) - time;
   if (moved_measurably(last, time_step)) refuse_stalled(function, last);
-  throw InvalidArgument(
-      function, "world", std::to_string(count) + " events at t = " + detail::number_text(time),
+  refuse_never_ending(
+      function, std::to_string(count) + " events at t = " + detail::number_text(time),
+      "their contacts come at one instant (or a rounding apart) without end", last,
       "has balls jammed: balls held by touching balls and walls on every side (a closed row of "
       "exactly touching balls around the periodic cell or from wall to wall, a ball wedged in a "
       "corner) pass their contacts on without moving, for ever; leave a gap (docs/world.md, "
       "\"Known limits\")");
+}
+
+void World::Impl::refuse_piling_up(const char* function, const Event& last) const {
+  const std::string how =
+      "contacts come ever faster, infinitely often before one instant (each doubling of the "
+      "run's contact count took under 3/4 of the time of the one before, 8 times in a row)";
+  refuse_never_ending(
+      function,
+      "t = " + detail::number_text(time) + " (ball " + std::to_string(handle_of[last.owner]) + ")",
+      how, last, "has contacts piling up: " + how + " (docs/world.md, \"Known limits\")");
+}
+
+void World::Impl::refuse_never_ending(const char* function, const std::string& where,
+                                      const std::string& how, const Event& last,
+                                      const std::string& otherwise) const {
+  if (mover_met) {
+    throw InvalidArgument(function, "world", where,
+                          "has balls crushed: a moving immovable ball closes on balls against a "
+                          "wall or another immovable ball, and " +
+                              how +
+                              "; stop the immovable ball first (docs/world.md, \"Known "
+                              "limits\")");
+  }
+  const bool inelastic = def.collapse_time == 0.0 &&
+                         (restitution_of(last.owner) < 1.0 || (last.kind == EventKind::ball_ball &&
+                                                               restitution_of(last.partner) < 1.0));
+  if (inelastic) {
+    throw InvalidArgument(function, "world", where,
+                          "has an inelastic collapse: balls with restitution below 1 pressed "
+                          "together (against a wall, or in a cluster) meet again and again, and " +
+                              how +
+                              "; set WorldDef::collapse_time (a ball that met something less "
+                              "than that long ago then bounces elastically; docs/world.md, "
+                              "\"Known limits\")");
+  }
+  throw InvalidArgument(function, "world", where, otherwise);
 }
 
 void World::Impl::refuse_stalled(const char* function, const Event& last) const {
@@ -557,8 +591,6 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   advance(j, t);
   BallSlot& a = balls[i];
   BallSlot& b = balls[j];
-  const Vec2 before_i = a.velocity;
-  const Vec2 before_j = b.velocity;
   const Vec2 between = minimum_image(b.position - a.position);
   const Vec2 normal = between == Vec2{} ? normalized(a.velocity - b.velocity) : normalized(between);
   const double approach = dot(a.velocity - b.velocity, normal);
@@ -576,44 +608,16 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     }
     if (contact_wanted()) record_ball_ball(i, j, t, between, normal, approach, impulse);
     resolved = true;
-    if (crushing(i, j, before_i, before_j)) crushed_ball = movable(i) ? i : j;
+    // An immovable ball at rest is a post, like a wall; a moving one does work on what it meets.
+    if (inverse_a == 0.0 ? a.velocity != Vec2{} : (inverse_b == 0.0 && b.velocity != Vec2{})) {
+      mover_met = true;
+    }
   }
   ++a.version;
   ++b.version;
   predict(i);
   predict(j);
   return resolved;
-}
-
-bool World::Impl::crushing(std::uint32_t i, std::uint32_t j, Vec2 before_i, Vec2 before_j) {
-  const bool i_moves = movable(i);
-  const bool j_moves = movable(j);
-  if (i_moves && j_moves) {  // two movable balls: neither is caught against a mover
-    infos[i].pumped = 0;
-    infos[j].pumped = 0;
-    return false;
-  }
-  const std::uint32_t ball = i_moves ? i : j;
-  const Vec2 mover_velocity = i_moves ? balls[j].velocity : balls[i].velocity;
-  if (mover_velocity == Vec2{}) return false;  // an immovable ball at rest: a post, like a wall
-  const Vec2 before = i_moves ? before_i : before_j;
-  std::uint32_t& pumped = infos[ball].pumped;
-  if (length_squared(balls[ball].velocity) > length_squared(before)) {
-    return ++pumped >= kCrushBounces;
-  }
-  pumped = 0;
-  return false;
-}
-
-void World::Impl::refuse_crushed(const char* function, std::uint32_t ball) const {
-  throw InvalidArgument(
-      function, "world",
-      "t = " + detail::number_text(time) + " (ball " + std::to_string(handle_of[ball]) + ")",
-      "has a ball crushed: a moving immovable ball closes on it against a wall or another "
-      "immovable ball, so it bounces ever faster, infinitely often before the gap closes (" +
-          std::to_string(kCrushBounces) +
-          " speed-ups in a row); stop the immovable ball first (docs/world.md, \"Known "
-          "limits\")");
 }
 
 void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between,

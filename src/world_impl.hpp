@@ -50,11 +50,8 @@ static_assert(sizeof(BallSlot) == 48);
 struct BallInfo {
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
-  // Bounces off moving immovable balls in a row that sped the ball up (run's crush detection;
-  // it fills what was padding, and is not saved).
-  std::uint32_t pumped = 0;
 };
-static_assert(sizeof(BallInfo) == 16);
+static_assert(sizeof(BallInfo) == 16);  // with 4 bytes of padding
 
 // set_position(nearest_free)'s sweep: whether the ball touched something on its way, where it
 // then stops, and where the sweep itself put its centre at that touch.
@@ -105,9 +102,8 @@ struct World::Impl {
   // Whether some ball's restitution differs from def.restitution; until then contacts need not
   // read the balls' infos (a cache miss each in a large world).
   bool mixed_restitution = false;
-  // A ball that the latest contact found crushed (resolve_ball_ball), refused by run.
-  static constexpr std::uint32_t kNoCrush = 0xFFFFFFFFu;
-  std::uint32_t crushed_ball = kNoCrush;
+  // Whether a moving immovable ball has met a ball in this run (the cause run's pace rule names).
+  bool mover_met = false;
 
   // ---- handles ----
   [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
@@ -222,10 +218,15 @@ struct World::Impl {
   [[noreturn]] void refuse_endless(const char* function, std::uint64_t count,
                                    const detail::Event& last) const;
   bool resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t);
-  // Counts a contact of balls i and j (velocities before it given) towards the crush rule; true
-  // when a ball has now been sped up by moving immovable balls too many times in a row.
-  [[nodiscard]] bool crushing(std::uint32_t i, std::uint32_t j, Vec2 before_i, Vec2 before_j);
-  [[noreturn]] void refuse_crushed(const char* function, std::uint32_t ball) const;
+  // Refuses a run whose contacts pile up towards one instant (contact_pace.hpp), `last` the
+  // latest.
+  [[noreturn]] void refuse_piling_up(const char* function, const detail::Event& last) const;
+  // Refuses a run that would never end (`where` and `how` say what was seen), naming its likely
+  // cause: balls crushed by a moving immovable ball, else an inelastic collapse where `last`'s
+  // balls bounce inelastically without collapse_time, else `otherwise`.
+  [[noreturn]] void refuse_never_ending(const char* function, const std::string& where,
+                                        const std::string& how, const detail::Event& last,
+                                        const std::string& otherwise) const;
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);

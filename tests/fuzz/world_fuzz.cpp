@@ -265,10 +265,10 @@ class Harness {
     // the periodic cell, whose grid covers the whole of it.
     if (def_.boundary == Boundary::open) def.radius = std::max(def.radius, kSmallestOpenRadius);
     def.mass = in_.pick(kMasses);
-    // A moving immovable ball does work on the balls it meets without limit: a crushed ball is
-    // refused after 2^18 speed-ups
-    // (WorldExtreme.BallCrushedByAMovingImmovableBallIsRefusedNotHung), but one driving a periodic
-    // gas heats it ever faster, more contacts each time unit (tried in session 5: inputs of 26 s).
+    // A moving immovable ball does work on the balls it meets without limit: crushed balls are
+    // refused once their contacts pile up (WorldExtreme.RowOfBallsCrushedByAMovingImmovableBall…),
+    // but one driving a periodic gas heats it ever faster, more contacts each time unit (tried in
+    // session 5: inputs of 26 s).
     // Valid input the fuzzer cannot bound, so immovable balls stay at rest.
     if (def.mass == carom::kImmovable) def.velocity = {};
     const std::uint8_t r = in_.byte();

@@ -274,6 +274,83 @@ TEST(WorldExtreme, BallBetweenAWallAndARecedingImmovableBallIsNoCrush) {
   EXPECT_FALSE(scene.world.audit().has_value()) << *scene.world.audit();
 }
 
+// A box world [0, 20]² with `count` balls of radius 0.5 resting in a row from (1, 10), 1.5 apart,
+// each of restitution `restitution`, and an immovable ball of radius 1 two units beyond the last,
+// closing on them at speed 1: the room left for the row, 2 + 1.5·count − count, is gone at
+// t = 2 + 0.5·count.
+struct RowCrushScene {
+  World world;
+  BallId mover;
+  std::vector<BallId> row;
+  RowCrushScene(int count, double restitution) : world(extreme_box(20.0)) {
+    for (int k = 0; k < count; ++k) {
+      BallDef ball = extreme_ball({1.0 + 1.5 * k, 10.0}, {});
+      ball.restitution = restitution;
+      row.push_back(world.add_ball(ball));
+    }
+    mover =
+        world.add_ball(extreme_ball({1.0 + 1.5 * count + 2.0, 10.0}, {-1.0, 0.0}, 1.0, kImmovable));
+  }
+};
+
+// The balls pass the mover's push along the row and back, faster and faster, infinitely often
+// before the gap closes: every contact moves a ball, and each ball meets the others between its
+// speed-ups, so neither the jam rule nor a count of one ball's speed-ups sees it. step used
+// never to return (two balls: still running after a minute); the pace rule refuses it.
+TEST(WorldExtreme, RowOfBallsCrushedByAMovingImmovableBallIsRefusedNotHung) {
+  for (const int count : {2, 3, 5}) {
+    SCOPED_TRACE(count);
+    RowCrushScene scene(count, 1.0);
+    alarm(60);  // a hang ends as a failure
+    expect_endless_step_refused(scene.world, 10.0, "crushed");
+    alarm(0);
+    const double closing = 2.0 + 0.5 * count;
+    EXPECT_LT(scene.world.time(), closing);
+    EXPECT_GT(scene.world.time(), closing - 1e-3);
+    // Stopped, the balls and the mover leave the world valid and stepping on.
+    scene.world.set_velocity(scene.mover, {});
+    for (const BallId ball : scene.row) scene.world.set_velocity(ball, {});
+    EXPECT_NO_THROW(scene.world.step(1.0));
+    EXPECT_FALSE(scene.world.audit().has_value()) << *scene.world.audit();
+  }
+}
+
+// Inelastic, the row's contacts end at one instant instead (the jam rule's case); the refusal
+// still names the crush, not a jam.
+TEST(WorldExtreme, InelasticRowCrushedByAMovingImmovableBallIsRefusedAsCrushed) {
+  RowCrushScene scene(3, 0.5);
+  alarm(60);
+  expect_endless_step_refused(scene.world, 10.0, "crushed");
+  alarm(0);
+}
+
+// Twenty balls of restitution 0.5 running into a wall in a row, without the collapse guard:
+// their contacts against the wall end at one instant (an inelastic collapse). The refusal says
+// so and names the setting (it used to call the balls jammed and advise a gap); with the
+// setting the row settles and the world runs on.
+TEST(WorldExtreme, InelasticRowIntoAWallWithoutCollapseTimeIsRefusedNamingTheSetting) {
+  const auto row_into_wall = [](double collapse_time) {
+    WorldDef def;
+    def.boundary = Boundary::box;
+    def.lower = {0.0, 0.0};
+    def.upper = {40.0, 40.0};
+    def.restitution = 0.5;
+    def.collapse_time = collapse_time;
+    World world(def);
+    for (int k = 0; k < 20; ++k) {
+      world.add_ball(extreme_ball({1.0 + 1.1 * k, 20.0}, {-1.0 - 0.01 * k, 0.0}));
+    }
+    return world;
+  };
+  World collapsing = row_into_wall(0.0);
+  alarm(60);
+  expect_endless_step_refused(collapsing, 10.0, "inelastic collapse");
+  alarm(0);
+  World guarded = row_into_wall(1e-6);
+  EXPECT_NO_THROW(guarded.step(10.0));
+  EXPECT_FALSE(guarded.audit().has_value()) << *guarded.audit();
+}
+
 // ---- points as walls -------------------------------------------------------------------------
 
 // A ball of radius 0.5 at (-3, 0.3) moving at (1, 0) meets a point at the origin when it is 0.4

@@ -7,6 +7,7 @@
 //   steps per second; the mean step time and the worst.
 // - BM_WorldGameDragStep: the same with the player dragging one ball every frame (set_position
 //   with nearest_free, then set_velocity): the cost of a change between steps.
+// - BM_WorldGameWallStep: the same with the player drawing a short wall every frame.
 // The figures and what they mean: docs/performance.md, "World (issue 3)".
 #include <benchmark/benchmark.h>
 
@@ -17,6 +18,7 @@
 #include <cstdlib>
 #include <memory>
 #include <random>
+#include <vector>
 
 #include "carom/world.hpp"
 #include "hard_disk_setup.hpp"
@@ -208,6 +210,52 @@ void BM_WorldGameDragStep(benchmark::State& state) {
   times.report();
 }
 BENCHMARK(BM_WorldGameDragStep)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+// Each frame the player draws a wall: a segment of length 2·kDrawnWallHalf at a random angle, at
+// a random place no ball touches (chosen before the frame's clock starts), then the world
+// steps. Timed: add_segment and the step. The walls stay: after n frames the box holds n more.
+constexpr double kDrawnWallHalf = 0.5;
+constexpr std::uint64_t kDrawSeed = 7;
+// Frames a run: a fixed number, so that every run (and every build) steps the same walls.
+constexpr benchmark::IterationCount kDrawnWalls = 600;
+
+Segment free_wall(const World& world, std::mt19937_64& random) {
+  const double side = kGameSpacing * kGameSide;
+  std::uniform_real_distribution<double> place(1.0, side - 1.0);
+  std::uniform_real_distribution<double> turn(0.0, 2.0 * 3.141592653589793);
+  for (;;) {
+    const double x = place(random);
+    const double y = place(random);
+    const double angle = turn(random);
+    const Vec2 site{x, y};
+    const auto touches = [&](BallId id) {
+      return length(world.position(id) - site) <= kDrawnWallHalf + world.radius(id);
+    };
+    const std::vector<BallId> balls = world.balls();
+    if (std::none_of(balls.begin(), balls.end(), touches)) {
+      const Vec2 half = Vec2{std::cos(angle), std::sin(angle)} * kDrawnWallHalf;
+      return {site - half, site + half};
+    }
+  }
+}
+
+void BM_WorldGameWallStep(benchmark::State& state) {
+  World world = warmed_game_world();  // afresh each run: the same walls on the same balls
+  std::mt19937_64 random(kDrawSeed);
+  FrameTimes times(state);
+  for (auto _ : state) {
+    const Segment wall = free_wall(world, random);
+    times.time([&] {
+      world.add_segment(wall);
+      world.step(1.0 / kFramesPerSecond);
+    });
+  }
+  times.report();
+}
+BENCHMARK(BM_WorldGameWallStep)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(kDrawnWalls);
 
 }  // namespace
 }  // namespace carom::bench

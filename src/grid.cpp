@@ -70,18 +70,12 @@ void Grid::set_walls(std::span<const Vec2> lower, std::span<const Vec2> upper) {
   wall_ids_.clear();
   if (lower.empty()) return;
   const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  // Each wall is listed in every cell its box, grown by one cell, overlaps: a ball whose centre
-  // is in a cell reaches at most its radius (below the cell size) beyond it, and a ball
-  // logically in a cell may sit a rounding outside it. Two passes: count, then fill, walls in
-  // ascending id order within each cell.
-  struct Span {
-    std::int32_t x0, x1, y0, y1;
-  };
-  std::vector<Span> spans(lower.size());
+  // Each wall is listed in its wall_cells. Two passes: count, then fill, walls in ascending id
+  // order within each cell.
+  std::vector<CellSpan> spans(lower.size());
   wall_start_.assign(cells + 1, 0);
   for (std::size_t w = 0; w < lower.size(); ++w) {
-    spans[w] = {column_of(lower[w].x - cell_.x), column_of(upper[w].x + cell_.x),
-                row_of(lower[w].y - cell_.y), row_of(upper[w].y + cell_.y)};
+    spans[w] = wall_cells(lower[w], upper[w]);
     for (std::int32_t y = spans[w].y0; y <= spans[w].y1; ++y) {
       for (std::int32_t x = spans[w].x0; x <= spans[w].x1; ++x)
         ++wall_start_[static_cast<std::size_t>(index(x, y)) + 1];

@@ -64,6 +64,17 @@ class Grid {
   }
   [[nodiscard]] std::int32_t next_ball(std::uint32_t ball) const { return next_[ball]; }
 
+  // The cells a wall with this bounding box is listed in: columns x0..x1, rows y0..y1.
+  struct CellSpan {
+    std::int32_t x0, x1, y0, y1;
+  };
+  [[nodiscard]] CellSpan wall_cells(Vec2 lower, Vec2 upper) const {
+    // Its box grown by one cell: a ball whose centre is in a cell reaches at most its radius
+    // (below the cell size) beyond it, and a ball logically in a cell may sit a rounding
+    // outside it.
+    return {column_of(lower.x - cell_.x), column_of(upper.x + cell_.x), row_of(lower.y - cell_.y),
+            row_of(upper.y + cell_.y)};
+  }
   // Lists the walls, given by their bounding boxes (wall k: lower[k], upper[k]), in the cells.
   void set_walls(std::span<const Vec2> lower, std::span<const Vec2> upper);
   [[nodiscard]] std::span<const std::uint32_t> walls(std::int32_t cell) const {

@@ -258,8 +258,7 @@ WallId World::add_segment(const Segment& segment) {
   }
   require_room_for_a_wall(kFunction, "segment", w.walls.size());
   w.walls.push_back(detail::make_segment_wall(segment));
-  w.grid_valid = false;
-  w.events_valid = false;
+  w.wall_added();
   return static_cast<WallId>(w.walls.size() - 1);
 }
 
@@ -283,8 +282,7 @@ WallId World::add_arc(const Arc& arc) {
   }
   require_room_for_a_wall(kFunction, "arc", w.walls.size());
   w.walls.push_back(wall);
-  w.grid_valid = false;
-  w.events_valid = false;
+  w.wall_added();
   return static_cast<WallId>(w.walls.size() - 1);
 }
 

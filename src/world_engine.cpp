@@ -160,14 +160,50 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive()) grid.insert(i, grid.cell_of(position_at(i, time)));
   }
+  list_walls();
+  grid_valid = true;
+  events_valid = false;
+}
+
+void World::Impl::list_walls() {
   std::vector<Vec2> wall_lower(walls.size());
   std::vector<Vec2> wall_upper(walls.size());
   for (std::size_t w = 0; w < walls.size(); ++w) {
     detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
   }
   grid.set_walls(wall_lower, wall_upper);
-  grid_valid = true;
-  events_valid = false;
+}
+
+// The wall is listed in a few cells, and only the balls in those cells can meet it before they
+// cross into another cell (which predicts them afresh): they alone are re-predicted, each as a
+// contact would (its slot replaced, its neighbours given the new event where it comes first).
+// Their trajectories are unchanged until they meet it, so every other pending event stays valid.
+void World::Impl::wall_added() {
+  Vec2 lower;
+  Vec2 upper;
+  detail::bounds(walls.back(), lower, upper);
+  const Vec2 grid_lower = grid.lower();
+  const Vec2 grid_upper = grid.upper();
+  const bool covered = lower.x >= grid_lower.x && lower.y >= grid_lower.y &&
+                       upper.x <= grid_upper.x && upper.y <= grid_upper.y;
+  if (!grid_valid || !covered) {  // an open world's grid grows to cover it at the next run
+    grid_valid = false;
+    events_valid = false;
+    return;
+  }
+  list_walls();  // O(cells) integer work, far below a prediction per ball
+  if (!events_valid) return;
+  queue.use_handles(handle_of.data());
+  const detail::Grid::CellSpan cells = grid.wall_cells(lower, upper);
+  for (std::int32_t y = cells.y0; y <= cells.y1; ++y) {
+    for (std::int32_t x = cells.x0; x <= cells.x1; ++x) {
+      for (std::int32_t j = grid.first_ball(grid.index(x, y)); j != detail::kNoBall;
+           j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+        advance(static_cast<std::uint32_t>(j), time);  // prediction reads it at the world's time
+        predict(static_cast<std::uint32_t>(j));
+      }
+    }
+  }
 }
 
 // Whether a re-plan for `ball_total` balls over the grid's present extent would make cells

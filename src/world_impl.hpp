@@ -185,6 +185,12 @@ struct World::Impl {
   // for an open world, cover every ball and wall), rebuilding it when it does not.
   void ensure_grid(Vec2 extra_point, double extra_radius);
   void rebuild_grid(Vec2 extra_point, double extra_radius);
+  // Lists every wall in the grid's cells.
+  void list_walls();
+  // After a wall is added between runs (the last of `walls`): lists it and re-predicts the balls
+  // that could meet it, or leaves a re-plan of the grid and every prediction to the next run when
+  // the grid does not cover it.
+  void wall_added();
   [[nodiscard]] bool grid_too_coarse(std::size_t ball_total, double coarseness) const;
   // The side of a cell for `ball_total` balls over that extent whose largest radius is
   // `largest`, before rounding the cell count.

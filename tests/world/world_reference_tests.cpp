@@ -302,6 +302,51 @@ TEST(WorldReference, ChangesBetweenRunsContactByContact) {
   }
 }
 
+// Walls added between runs to a moving box gas: each round a segment at an arbitrary angle or an
+// arc, standing where no ball touches it, goes into the World and the oracle alike. The World
+// re-predicts only the balls in the cells the wall is listed in; the next contacts must still be
+// the oracle's (fast balls meet the new walls within a few contacts).
+TEST(WorldReference, WallsAddedBetweenRunsContactByContact) {
+  constexpr int kRounds = 24;
+  constexpr std::size_t kContactsPerRound = 30;
+  const GasOptions options = fast_gas(80, 60.0, false);
+  ReferenceScene scene = testing::random_gas(options, 113);
+  SceneWorld built = testing::build_world(scene);
+  std::mt19937_64 engine(113);
+  auto uniform = [&engine](double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(engine);
+  };
+  for (int round = 0; round < kRounds; ++round) {
+    SCOPED_TRACE("round " + std::to_string(round));
+    // The wall lies within `reach` of its site: a free site is one no ball comes within reach of.
+    const double reach = uniform(0.5, 3.0);
+    Vec2 site;
+    for (bool free = false; !free;) {
+      site = {uniform(reach, options.side - reach), uniform(reach, options.side - reach)};
+      free = true;
+      for (const BallId id : built.ids) {
+        free = free && length(built.world.position(id) - site) > reach + built.world.radius(id);
+      }
+    }
+    const double angle = uniform(-std::numbers::pi, std::numbers::pi);
+    if (round % 2 == 0) {
+      const Vec2 half = Vec2{std::cos(angle), std::sin(angle)} * reach;
+      const Segment segment{site - half, site + half};
+      built.world.add_segment(segment);
+      scene.walls.push_back(testing::segment_wall(segment));
+    } else {
+      const double span = uniform(0.5, 2.0 * std::numbers::pi - 0.1);
+      const Arc arc{site, reach, angle, angle + span};
+      built.world.add_arc(arc);
+      scene.walls.push_back(testing::arc_wall(arc));
+    }
+    ASSERT_FALSE(built.world.audit().has_value());
+    expect_contact_by_contact(built, scene, kContactsPerRound, tolerances_for(options));
+    if (HasFatalFailure()) return;
+    built.world.step(0.5 * kReferenceStep);  // and a plain step between rounds
+  }
+}
+
 // ---- step by step ----------------------------------------------------------------------------
 
 // Steps of a sixteenth of kReferenceStep over a sparse gas: one or two contacts per step, so that

@@ -33,7 +33,6 @@ class EventQueue {
   void reorder(std::span<const std::uint32_t> new_place);
   void set(std::uint32_t owner, const Event& event);
   [[nodiscard]] Event slot(std::uint32_t owner) const { return unpack(owner); }
-  [[nodiscard]] double time_of(std::uint32_t owner) const { return events_[owner].time; }
   // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();

@@ -175,9 +175,8 @@ void World::Impl::list_walls() {
 }
 
 // The wall is listed in a few cells, and only the balls in those cells can meet it before they
-// cross into another cell (which predicts them afresh): they alone are re-predicted, each as a
-// contact would (its slot replaced, its neighbours given the new event where it comes first).
-// Their trajectories are unchanged until they meet it, so every other pending event stays valid.
+// cross into another cell (which predicts them afresh): they alone are re-predicted. Their
+// trajectories are unchanged until they meet it, so every other pending event stays valid.
 void World::Impl::wall_added() {
   Vec2 lower;
   Vec2 upper;
@@ -276,10 +275,9 @@ void World::Impl::predict_all() {
 }
 
 // The changed ball is at the world's time (or dead). Its prediction is what a contact's would
-// be: its own slot replaced, and each neighbour's slot given the new contact where it comes
-// first; a neighbour's event with the ball as it was is stale by the ball's version and is
-// re-predicted when it comes up. So every slot again holds an event no later than its ball's
-// true next one.
+// be: its slot covers every pair it is now in, and a neighbour's event with the ball as it was
+// is stale by the ball's version and is re-predicted when it comes up (docs/world.md, "One
+// event per ball").
 void World::Impl::repredict_changed(std::uint32_t ball) {
   if (!events_valid) return;            // the next run predicts every ball anyway
   queue.use_handles(handle_of.data());  // add_ball may have moved the array
@@ -292,9 +290,9 @@ void World::Impl::repredict_changed(std::uint32_t ball) {
 }
 
 // Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
-// in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. A
-// contact with another ball earlier than that ball's own slot goes into its slot too, so that
-// every ball's slot always holds an event no later than its true next one (docs/world.md).
+// in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. The
+// other ball's slot is left alone: this one's covers their pair (docs/world.md, "One event per
+// ball").
 void World::Impl::predict(std::uint32_t ball) {
   const BallSlot& b = balls[ball];
   const Vec2 p = b.position;
@@ -358,15 +356,6 @@ void World::Impl::predict(std::uint32_t ball) {
     candidate.partner = other;
     candidate.partner_version = balls[other].version;
     if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
-    // Mirroring (docs/world.md): the time alone settles it unless the times are equal.
-    if (candidate.time > queue.time_of(other)) return;
-    Event mirrored = candidate;
-    mirrored.owner = other;
-    mirrored.partner = ball;
-    mirrored.partner_version = b.version;
-    if (detail::earlier(mirrored, queue.slot(other), handle_of.data())) {
-      queue.set(other, mirrored);
-    }
   };
   const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
     batch.solve(kFarFuture);

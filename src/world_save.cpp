@@ -181,8 +181,8 @@ std::string World::Impl::save_payload() const {
     }
   }
   if (events_valid) {
-    // Every ball's pending event as predicted, mirrored events and stale ones included: they
-    // were computed from earlier positions and cannot be re-derived from the state above.
+    // Every ball's pending event as predicted, stale ones included: they were computed from
+    // earlier positions and cannot be re-derived from the state above.
     for (const std::uint32_t i : slot_of_handle) {
       const detail::Event event = queue.slot(i);
       out.f64(event.time);

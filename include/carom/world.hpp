@@ -157,7 +157,10 @@ class World {
   // Other cases cannot be proved in general: two balls in a periodic cell that move relative to
   // each other along a slanted line may meet after an astronomically long time or never (a
   // closed orbit that just misses). There, this call would follow cell crossings for ever: pass
-  // a time limit (below) when a run might be of that kind.
+  // a time limit (below) when a run might be of that kind. A contact that will come, but only
+  // after an astronomically long flight, is as bad: two balls in an open world moving side by
+  // side at speed 7 whose paths converge by 10⁻¹⁵ a time unit meet after 10¹⁶ time units, and the
+  // run follows the grid along with them until then.
   std::uint64_t run_collisions(std::uint64_t count);
   // The same, but never past world time `time_limit` (>= time()): when the next contact would
   // come later, it stops there, with the world's time at `time_limit` (as run_until would).

@@ -238,45 +238,68 @@ TEST(WorldReference, InelasticBallsSlidingRoundABowlContactByContact) {
   expect_contact_by_contact(built, scene, kContactsCompared, tolerances_for(options));
 }
 
-// Between runs a game moves, pushes, removes and adds balls; the World must forget every
-// prediction those changes spoil. Each round changes the scene, then compares contact by contact.
-TEST(WorldReference, ChangesBetweenRunsContactByContact) {
-  constexpr int kRounds = 20;
-  constexpr std::size_t kContactsPerRound = 30;
-  const GasOptions options = fast_gas(80, 60.0, false);
-  ReferenceScene scene = testing::random_gas(options, 109);
-  SceneWorld built = testing::build_world(scene);
-  std::mt19937_64 engine(109);
-  auto uniform = [&engine](double low, double high) {
+// A fast gas of 80 balls in a box, changed between runs: each round `change` alters the World
+// and the oracle's scene alike (drawing from `uniform`), then the next 30 contacts are compared
+// one by one, then a plain step follows.
+struct ChangedGas {
+  static constexpr std::size_t kContactsPerRound = 30;
+  GasOptions options = fast_gas(80, 60.0, false);
+  ReferenceScene scene;
+  SceneWorld built;
+  std::mt19937_64 engine;
+
+  explicit ChangedGas(std::uint64_t seed)
+      : scene(testing::random_gas(options, seed)),
+        built(testing::build_world(scene)),
+        engine(seed) {}
+  double uniform(double low, double high) {
     return std::uniform_real_distribution<double>(low, high)(engine);
+  }
+  template <class Change>
+  void run_rounds(int rounds, Change change) {
+    for (int round = 0; round < rounds; ++round) {
+      SCOPED_TRACE("round " + std::to_string(round));
+      change(round);
+      ASSERT_FALSE(built.world.audit().has_value());
+      expect_contact_by_contact(built, scene, kContactsPerRound, tolerances_for(options));
+      if (::testing::Test::HasFatalFailure()) return;
+      built.world.step(0.5 * kReferenceStep);
+    }
+  }
+};
+
+// Between runs a game moves, pushes, removes and adds balls; the World must forget every
+// prediction those changes spoil.
+TEST(WorldReference, ChangesBetweenRunsContactByContact) {
+  ChangedGas gas(109);
+  SceneWorld& built = gas.built;
+  auto pick = [&gas]() {
+    return std::uniform_int_distribution<std::size_t>(0, gas.built.ids.size() - 1)(gas.engine);
   };
-  auto pick = [&engine, &built]() {
-    return std::uniform_int_distribution<std::size_t>(0, built.ids.size() - 1)(engine);
+  auto random_velocity = [&gas] {
+    const double angle = gas.uniform(0.0, 2.0 * std::numbers::pi);
+    return Vec2{std::cos(angle), std::sin(angle)} * gas.uniform(0.0, gas.options.max_speed);
   };
-  auto random_velocity = [&] {
-    const double angle = uniform(0.0, 2.0 * std::numbers::pi);
-    return Vec2{std::cos(angle), std::sin(angle)} * uniform(0.0, options.max_speed);
-  };
-  for (int round = 0; round < kRounds; ++round) {
-    SCOPED_TRACE("round " + std::to_string(round));
+  const double side = gas.options.side;
+  gas.run_rounds(20, [&](int) {
     // A push, a drag to wherever it can go, a removal and an addition. (One random draw per
     // statement: the order function arguments are evaluated in is unspecified.)
     const std::size_t pushed = pick();
     const Vec2 push = random_velocity();
     built.world.set_velocity(built.ids[pushed], push);
     const std::size_t dragged = pick();
-    const Vec2 target{uniform(1.0, options.side - 1.0), uniform(1.0, options.side - 1.0)};
+    const Vec2 target{gas.uniform(1.0, side - 1.0), gas.uniform(1.0, side - 1.0)};
     static_cast<void>(
         built.world.set_position(built.ids[dragged], target, Placement::nearest_free));
     const std::size_t removed = pick();
     built.world.remove_ball(built.ids[removed]);
     built.ids.erase(built.ids.begin() + static_cast<std::ptrdiff_t>(removed));
-    scene.balls.erase(scene.balls.begin() + static_cast<std::ptrdiff_t>(removed));
+    gas.scene.balls.erase(gas.scene.balls.begin() + static_cast<std::ptrdiff_t>(removed));
     testing::ReferenceBall added;
-    added.radius = options.max_radius;
+    added.radius = gas.options.max_radius;
     added.velocity = random_velocity();
     for (;;) {  // a free place: add_ball refuses an overlapping one
-      added.position = {uniform(1.0, options.side - 1.0), uniform(1.0, options.side - 1.0)};
+      added.position = {gas.uniform(1.0, side - 1.0), gas.uniform(1.0, side - 1.0)};
       BallDef def;
       def.position = added.position;
       def.velocity = added.velocity;
@@ -290,61 +313,46 @@ TEST(WorldReference, ChangesBetweenRunsContactByContact) {
         std::size_t at = 0;
         while (at < built.ids.size() && built.ids[at].index < id.index) ++at;
         built.ids.insert(built.ids.begin() + static_cast<std::ptrdiff_t>(at), id);
-        scene.balls.insert(scene.balls.begin() + static_cast<std::ptrdiff_t>(at), added);
+        gas.scene.balls.insert(gas.scene.balls.begin() + static_cast<std::ptrdiff_t>(at), added);
         break;
       } catch (const InvalidArgument&) {
       }
     }
-    ASSERT_FALSE(built.world.audit().has_value());
-    expect_contact_by_contact(built, scene, kContactsPerRound, tolerances_for(options));
-    if (HasFatalFailure()) return;
-    built.world.step(0.5 * kReferenceStep);  // and a plain step between rounds
-  }
+  });
 }
 
-// Walls added between runs to a moving box gas: each round a segment at an arbitrary angle or an
-// arc, standing where no ball touches it, goes into the World and the oracle alike. The World
-// re-predicts only the balls in the cells the wall is listed in; the next contacts must still be
-// the oracle's (fast balls meet the new walls within a few contacts).
+// Walls added between runs: each round a segment at an arbitrary angle or an arc, standing where
+// no ball touches it, goes into the World and the oracle alike. The World re-predicts only the
+// balls in the cells the wall is listed in; the next contacts must still be the oracle's (fast
+// balls meet the new walls within a few contacts).
 TEST(WorldReference, WallsAddedBetweenRunsContactByContact) {
-  constexpr int kRounds = 24;
-  constexpr std::size_t kContactsPerRound = 30;
-  const GasOptions options = fast_gas(80, 60.0, false);
-  ReferenceScene scene = testing::random_gas(options, 113);
-  SceneWorld built = testing::build_world(scene);
-  std::mt19937_64 engine(113);
-  auto uniform = [&engine](double low, double high) {
-    return std::uniform_real_distribution<double>(low, high)(engine);
-  };
-  for (int round = 0; round < kRounds; ++round) {
-    SCOPED_TRACE("round " + std::to_string(round));
+  ChangedGas gas(113);
+  SceneWorld& built = gas.built;
+  const double side = gas.options.side;
+  gas.run_rounds(24, [&](int round) {
     // The wall lies within `reach` of its site: a free site is one no ball comes within reach of.
-    const double reach = uniform(0.5, 3.0);
+    const double reach = gas.uniform(0.5, 3.0);
     Vec2 site;
     for (bool free = false; !free;) {
-      site = {uniform(reach, options.side - reach), uniform(reach, options.side - reach)};
+      site = {gas.uniform(reach, side - reach), gas.uniform(reach, side - reach)};
       free = true;
       for (const BallId id : built.ids) {
         free = free && length(built.world.position(id) - site) > reach + built.world.radius(id);
       }
     }
-    const double angle = uniform(-std::numbers::pi, std::numbers::pi);
+    const double angle = gas.uniform(-std::numbers::pi, std::numbers::pi);
     if (round % 2 == 0) {
       const Vec2 half = Vec2{std::cos(angle), std::sin(angle)} * reach;
       const Segment segment{site - half, site + half};
       built.world.add_segment(segment);
-      scene.walls.push_back(testing::segment_wall(segment));
+      gas.scene.walls.push_back(testing::segment_wall(segment));
     } else {
-      const double span = uniform(0.5, 2.0 * std::numbers::pi - 0.1);
+      const double span = gas.uniform(0.5, 2.0 * std::numbers::pi - 0.1);
       const Arc arc{site, reach, angle, angle + span};
       built.world.add_arc(arc);
-      scene.walls.push_back(testing::arc_wall(arc));
+      gas.scene.walls.push_back(testing::arc_wall(arc));
     }
-    ASSERT_FALSE(built.world.audit().has_value());
-    expect_contact_by_contact(built, scene, kContactsPerRound, tolerances_for(options));
-    if (HasFatalFailure()) return;
-    built.world.step(0.5 * kReferenceStep);  // and a plain step between rounds
-  }
+  });
 }
 
 // ---- step by step ----------------------------------------------------------------------------

@@ -721,6 +721,21 @@ TEST(WorldFuzzFound, ContactsWhereTimeIsTooCoarseAreRefusedAsAStall) {
   EXPECT_LT(world.time(), 1e13 + 100.0);
 }
 
+// Found by the world fuzzer (session 6, seed 43): at t = 2.7·10¹¹ the double grid of time is
+// 6·10⁻⁵ apart, and a ball of radius 10⁻⁶ at speed 0.5 moves 3·10⁻⁵ in one step of it. Its wall
+// contact came up with the ball rounded past the wall, not approaching it, so nothing bounced and
+// the ball left the box (to x = −1.47 by the step's end). A predicted contact that does not
+// bounce at a time too coarse for its balls is now refused as a stall too.
+TEST(WorldFuzzFound, ContactLostToCoarseTimeIsRefusedNotLetThroughAWall) {
+  World world = extreme_box(20.0);
+  world.run_until(2.7e11);
+  const BallId ball = world.add_ball(extreme_ball(
+      {0.083314259555962458, 17.0}, {-0.44314286987710788, 0.23156942129106903}, 1e-6));
+  expect_endless_step_refused(world, 3.5, "stalled");
+  EXPECT_LT(world.time(), 2.7e11 + 1.0);  // at the wall, about 0.19 into the step
+  EXPECT_GT(world.position(ball).x, -1e-4);
+}
+
 // The same stall without contacts: in an open world at t = 10²⁴ a lone ball's cell crossings
 // round to the present instant and never end.
 TEST(WorldFuzzFound, CrossingsWhereTimeNoLongerAdvancesAreRefusedAsAStall) {

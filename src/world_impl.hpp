@@ -102,7 +102,8 @@ struct World::Impl {
   // Whether some ball's restitution differs from def.restitution; until then contacts need not
   // read the balls' infos (a cache miss each in a large world).
   bool mixed_restitution = false;
-  // Whether a moving immovable ball has met a ball in this run (the cause run's pace rule names).
+  // Whether a moving immovable ball has met a ball in this run: a run that would never end is
+  // then refused as a crush.
   bool mover_met = false;
 
   // ---- handles ----

@@ -20,7 +20,7 @@
 namespace carom::detail {
 namespace {
 
-// Pair k, one at a time.
+// Pair k, one at a time; its bits of the masks are clear on entry.
 void solve_pair(PairBatch& batch, std::size_t k, double horizon) {
   // The lane's values first, so that every test below is on plain locals.
   const double s_x = batch.sx[k];
@@ -46,8 +46,8 @@ void solve_pair(PairBatch& batch, std::size_t k, double horizon) {
   const bool inside = c <= 0.0;  // already touching and moving inwards: t = 0
   const bool hit = (b < 0.0) & (inside | ((discriminant > 0.0) & (hit_time <= horizon)));
   batch.t[k] = inside ? 0.0 : hit_time;
-  // kMiss 0, kHit 1, kRescale 2, as arithmetic rather than branches.
-  batch.outcome[k] = static_cast<std::uint8_t>(in_range ? static_cast<int>(hit) : 2);
+  batch.hits |= static_cast<std::uint32_t>(hit & in_range) << k;
+  batch.rescales |= static_cast<std::uint32_t>(!in_range) << k;
 }
 
 #ifdef CAROM_PAIR_BATCH_AVX2
@@ -71,6 +71,8 @@ __attribute__((target("avx2"))) void solve_avx2(PairBatch& batch, double horizon
   const __m256d low = _mm256_set1_pd(kSquareLow);
   const __m256d high = _mm256_set1_pd(kSquareHigh);
   const __m256d limit = _mm256_set1_pd(horizon);
+  std::uint32_t hits = 0;
+  std::uint32_t rescales = 0;
   for (std::size_t k = 0; k < padded; k += kLanes) {
     const __m256d s_x = _mm256_load_pd(&batch.sx[k]);
     const __m256d s_y = _mm256_load_pd(&batch.sy[k]);
@@ -104,14 +106,15 @@ __attribute__((target("avx2"))) void solve_avx2(PairBatch& batch, double horizon
     const __m256d hit =
         _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_LT_OQ), _mm256_or_pd(inside, meets));
     _mm256_store_pd(&batch.t[k], _mm256_blendv_pd(hit_time, zero, inside));
-    const int in_bits = _mm256_movemask_pd(in_range);
-    const int hit_bits = _mm256_movemask_pd(hit);
-    for (std::size_t lane = 0; lane < kLanes; ++lane) {
-      const int in = (in_bits >> lane) & 1;
-      const int lane_hit = (hit_bits >> lane) & 1;
-      batch.outcome[k + lane] = static_cast<std::uint8_t>(in != 0 ? lane_hit : 2);
-    }
+    const auto in_bits = static_cast<std::uint32_t>(_mm256_movemask_pd(in_range));
+    const auto hit_bits = static_cast<std::uint32_t>(_mm256_movemask_pd(hit));
+    hits |= (hit_bits & in_bits) << k;
+    rescales |= (~in_bits & 0xFU) << k;
   }
+  // The padded lanes' bits dropped (a full batch keeps all 32).
+  const std::uint32_t used = batch.count == PairBatch::kCapacity ? ~0U : (1U << batch.count) - 1U;
+  batch.hits = hits & used;
+  batch.rescales = rescales & used;
 }
 
 // Whether this CPU (and its operating system) runs AVX2, asked once, at load time: before the
@@ -137,6 +140,8 @@ void PairBatch::solve(double horizon) {
 }
 
 void PairBatch::solve_one_by_one(double horizon) {
+  hits = 0;
+  rescales = 0;
   for (std::size_t k = 0; k < count; ++k) solve_pair(*this, k, horizon);
 }
 

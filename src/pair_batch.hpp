@@ -16,7 +16,7 @@
 namespace carom::detail {
 
 struct PairBatch {
-  static constexpr std::size_t kCapacity = 32;
+  static constexpr std::size_t kCapacity = 32;  // a bit of a 32-bit mask per pair
   enum Outcome : std::uint8_t { kMiss = 0, kHit = 1, kRescale = 2 };
 
   // (The cache-line-aligned arrays first, the small ones after: no padding between them.)
@@ -27,10 +27,13 @@ struct PairBatch {
   alignas(64) std::array<double, kCapacity> ux;
   alignas(64) std::array<double, kCapacity> uy;
   alignas(64) std::array<double, kCapacity> reach;
-  // Filled by solve(): the time from now of each hit, and what became of each pair.
+  // Filled by solve(): the time from now of each hit, and what became of the pairs as bit masks
+  // (bit k for pair k), so that the caller visits the few hits alone: pairs that hit, and pairs
+  // outside the exact range (whose answer is the scalar, rescaled path's; the rest miss).
   alignas(64) std::array<double, kCapacity> t;
   std::array<std::uint32_t, kCapacity> other;
-  std::array<std::uint8_t, kCapacity> outcome;
+  std::uint32_t hits = 0;
+  std::uint32_t rescales = 0;
   std::size_t count = 0;
 
   void push(Vec2 s, Vec2 u, double radius_sum, std::uint32_t neighbour) {
@@ -43,6 +46,10 @@ struct PairBatch {
     ++count;
   }
   [[nodiscard]] bool full() const { return count == kCapacity; }
+  [[nodiscard]] Outcome outcome(std::size_t k) const {
+    if (((rescales >> k) & 1U) != 0) return kRescale;
+    return ((hits >> k) & 1U) != 0 ? kHit : kMiss;
+  }
 
   // entry_crossing_in_range for every pair, with the horizon at +infinity's largest finite
   // stand-in (the world's kFarFuture); pairs whose magnitudes leave the exact range get

@@ -1,6 +1,7 @@
 // The event-driven engine behind carom::World: prediction, the event loop, contact response and
 // the grid's upkeep. Design and the argument that no contact is missed: docs/world.md.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -359,12 +360,13 @@ void World::Impl::predict(std::uint32_t ball) {
   };
   const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
     batch.solve(kFarFuture);
-    for (std::size_t k = 0; k < batch.count; ++k) {
-      if (batch.outcome[k] == detail::PairBatch::kMiss) continue;
-      if (batch.outcome[k] == detail::PairBatch::kHit) {
-        consider(batch.other[k], batch.t[k]);
-        continue;
-      }
+    // The earliest by a total order, so the order the pairs are visited in changes nothing.
+    for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(hits));
+      consider(batch.other[k], batch.t[k]);
+    }
+    for (std::uint32_t rescales = batch.rescales; rescales != 0; rescales &= rescales - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
       const detail::Crossing crossing = detail::entry_crossing_rescaled(
           {{batch.sx[k], batch.sy[k]}, {batch.ux[k], batch.uy[k]}, batch.reach[k]}, kFarFuture);
       if (crossing.found) consider(batch.other[k], crossing.t);

@@ -72,13 +72,13 @@ void check_pair_batch_solver(void (detail::PairBatch::*solver)(double)) {
       const detail::Crossing expected = detail::entry_crossing(s, u, batch.reach[k], kHorizon);
       // What prediction makes of the batch's answer (world_engine.cpp).
       detail::Crossing got;
-      if (batch.outcome[k] == detail::PairBatch::kHit) {
+      if (batch.outcome(k) == detail::PairBatch::kHit) {
         got = {true, batch.t[k]};
-      } else if (batch.outcome[k] == detail::PairBatch::kRescale) {
+      } else if (batch.outcome(k) == detail::PairBatch::kRescale) {
         got = detail::entry_crossing_rescaled({s, u, batch.reach[k]}, kHorizon);
         ++rescaled;
       }
-      EXPECT_EQ(batch.outcome[k] == detail::PairBatch::kRescale,
+      EXPECT_EQ(batch.outcome(k) == detail::PairBatch::kRescale,
                 !detail::in_exact_range(s, u, batch.reach[k]))
           << "pair " << k << " of round " << round;
       ASSERT_EQ(got.found, expected.found) << "round " << round << ", pair " << k;

@@ -677,8 +677,17 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   BallSlot& a = balls[i];
   // The contact's own normal where the query confirms it (touching and approaching now), else
   // the direction to the nearest point (the ball a rounding short of the wall).
-  const Impact now =
-      detail::time_of_impact(walls[wall], {a.position, radius_of(i)}, a.velocity, 0.0);
+  const Ball shape{a.position, radius_of(i)};
+  Impact now = detail::time_of_impact(walls[wall], shape, a.velocity, 0.0);
+  if (!now.hit) {
+    // A contact a sliver ahead that the motion cannot reach: a gap below the rounding of the
+    // position closes at a time at which the ball is still where it is now, so advancing it
+    // changes nothing and the same contact would come up again and again, a sliver later each
+    // time (a ball filling an arc's circle, at its centre, met its end point so). It is a
+    // contact now.
+    const Impact ahead = detail::time_of_impact(walls[wall], shape, a.velocity, kFarFuture);
+    if (ahead.hit && ahead.a_at == a.position) now = ahead;
+  }
   const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
   const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
   const double approach = dot(a.velocity, normal);

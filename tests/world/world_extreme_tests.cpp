@@ -736,6 +736,20 @@ TEST(WorldFuzzFound, ContactLostToCoarseTimeIsRefusedNotLetThroughAWall) {
   EXPECT_GT(world.position(ball).x, -1e-4);
 }
 
+// Found by the world fuzzer (seed 50): the same escape without a contact. At t = 4.4·10¹⁷ time's
+// grid is 64 apart and a ball of radius 0.01 at speed 0.5 moves 32 in one step of it: a cell
+// crossing taken a rounding late put it beyond the box's wall, in an edge cell with no outer
+// side to leave through, and no wall contact ahead; it flew on to x = −1.3·10¹⁷. Every event at
+// a time too coarse for its balls is now refused as a stall.
+TEST(WorldFuzzFound, CrossingAtCoarseTimeIsRefusedNotLetOutOfTheBox) {
+  World world = extreme_box(20.0);
+  world.run_until(4.4013911671781984e+17);
+  const BallId ball = world.add_ball(
+      extreme_ball({19.99, 19.99}, {-0.49999073385169063, -0.0030440207699469163}, 0.01));
+  expect_endless_step_refused(world, 1e18, "stalled");
+  EXPECT_EQ(world.position(ball).x, 19.99);  // refused at its first event, before it moved
+}
+
 // Found by the world fuzzer (seed 49): a ball exactly as large as a partial arc's circle, placed
 // at its centre, bounced off the arc and then never reached the arc's end point: that contact
 // lay 10⁻¹⁵ ahead, under the rounding of the position (20), so each event left the ball where it

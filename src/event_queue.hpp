@@ -36,6 +36,29 @@ class EventQueue {
   // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();
+  // The owners of the events likeliest to come up after the top one, for prefetching their
+  // data while the top one is processed: the top's two children in the heap and the first two
+  // of the next bucket. Writes up to four, returns how many.
+  int likely_next(std::uint32_t out[4]) const {
+    int count = 0;
+    for (std::size_t k = 1; k <= 2 && k < heap_.size(); ++k) out[count++] = heap_[k].owner();
+    if (year_open_ && current_ + 1 < year_end_) {
+      const auto next = static_cast<std::size_t>(current_ + 1) & (buckets_.size() - 1);
+      std::uint32_t owner = buckets_[next];
+      for (int k = 0; k < 2 && owner != kNoEvent; ++k) {
+        out[count++] = owner;
+        owner = link_next_[owner];
+      }
+    }
+    return count;
+  }
+  // Asks the cache for what replacing the ball's slot reads.
+  void prefetch_slot(std::uint32_t owner) const {
+    __builtin_prefetch(&events_[owner]);
+    __builtin_prefetch(&places_[owner]);
+    __builtin_prefetch(&link_next_[owner]);
+    __builtin_prefetch(&link_prev_[owner]);
+  }
   // The most balls, and walls, an event can name (two bits of the owner and partner fields hold
   // the kind).
   static constexpr std::uint32_t kMaxBalls = 1u << 30;

@@ -63,6 +63,11 @@ class Grid {
     return head_[static_cast<std::size_t>(cell)];
   }
   [[nodiscard]] std::int32_t next_ball(std::uint32_t ball) const { return next_[ball]; }
+  // Asks the cache for the ball's own grid entries (its cell and its list link).
+  void prefetch_for(std::uint32_t ball) const {
+    __builtin_prefetch(&ball_cell_[ball]);
+    __builtin_prefetch(&next_[ball]);
+  }
 
   // The cells a wall with this bounding box is listed in: columns x0..x1, rows y0..y1.
   struct CellSpan {

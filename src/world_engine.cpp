@@ -78,6 +78,10 @@ constexpr double kResolvableMotion = 0x1p-10;
 // Events without a contact before run_collisions first tries to prove that none will come
 // (at least; 2 per ball in larger worlds, where one crossing per ball is ordinary).
 constexpr std::uint64_t kEventsBeforeProof = 64;
+// Worlds with at least this many balls prefetch the next events' data (prefetch_likely_next):
+// 2^15 balls' records, grid and queue (~4 MB) outgrow a core's L2 cache; below it everything is
+// in cache and the prefetches cost 2 % (measured at 10^4 balls).
+constexpr std::uint32_t kPrefetchMinBalls = 1u << 15;
 
 }  // namespace
 
@@ -431,6 +435,19 @@ void World::Impl::predict(std::uint32_t ball) {
 
 // ---- the event loop -----------------------------------------------------------------------
 
+// The events likeliest to come next are in the queue already; their balls' records, grid
+// entries and queue slots are asked for now, so that they arrive while this event is processed
+// rather than one after another when theirs is (docs/performance.md, "eighth slice").
+CAROM_ALWAYS_INLINE inline void World::Impl::prefetch_likely_next() const {
+  std::uint32_t owners[4];
+  const int count = queue.likely_next(owners);
+  for (int k = 0; k < count; ++k) {
+    __builtin_prefetch(&balls[owners[k]]);
+    grid.prefetch_for(owners[k]);
+    queue.prefetch_slot(owners[k]);
+  }
+}
+
 std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t max_contacts) {
   contacts.clear();
   stopped = false;
@@ -454,10 +471,12 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
   std::uint64_t at_instant = 0;
   // Runs that would never end the other way: contacts coming ever faster, each with motion.
   detail::ContactPace pace;
+  const bool prefetching = live_count >= kPrefetchMinBalls;
   for (;;) {
     if (++events_since_sort > kSortEvents * live_count + kSortMinEvents) sort_by_cell();
     const Event event = queue.top();
     if (!(event.time <= end) || event.time == kInfinity) break;
+    if (prefetching) prefetch_likely_next();
     time = event.time;
     const bool contact = process(event);
     if (time != instant) {

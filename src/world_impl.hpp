@@ -217,6 +217,7 @@ struct World::Impl {
   // Whether a contact's balls have moved measurably in `elapsed` (run's jam detection).
   [[nodiscard]] bool moved_measurably(const detail::Event& contact, double elapsed) const;
   // Whether the rounding of the world's time moves one of a contact's balls measurably.
+  void prefetch_likely_next() const;
   [[nodiscard]] bool time_too_coarse(const detail::Event& contact) const;
   // Refuses a run whose time is too large for its balls' motion ("has stalled").
   [[noreturn]] void refuse_stalled(const char* function, const detail::Event& last) const;

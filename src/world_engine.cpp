@@ -535,7 +535,7 @@ bool World::Impl::moved_measurably(const Event& contact, double elapsed) const {
   return moved(contact.owner) || (contact.kind == EventKind::ball_ball && moved(contact.partner));
 }
 
-bool World::Impl::time_too_coarse(const Event& contact) const {
+bool World::Impl::time_too_coarse(const Event& event) const {
   // Neighbouring doubles near t are at most t·2⁻⁵² apart.
   const double time_step = std::abs(time) * 0x1p-52;
   const auto coarse = [&](std::uint32_t ball) {
@@ -543,7 +543,7 @@ bool World::Impl::time_too_coarse(const Event& contact) const {
     const double motion = time_step * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
     return motion > kResolvableMotion * radius_of(ball);
   };
-  return coarse(contact.owner) || (contact.kind == EventKind::ball_ball && coarse(contact.partner));
+  return coarse(event.owner) || (event.kind == EventKind::ball_ball && coarse(event.partner));
 }
 
 void World::Impl::refuse_endless(const char* function, std::uint64_t count,

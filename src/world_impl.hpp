@@ -216,9 +216,10 @@ struct World::Impl {
   bool process(const detail::Event& event);  // true when a contact was resolved
   // Whether a contact's balls have moved measurably in `elapsed` (run's jam detection).
   [[nodiscard]] bool moved_measurably(const detail::Event& contact, double elapsed) const;
-  // Whether the rounding of the world's time moves one of a contact's balls measurably.
+  // Asks the cache for the data of the events likeliest to follow the queue's top one.
   void prefetch_likely_next() const;
-  [[nodiscard]] bool time_too_coarse(const detail::Event& contact) const;
+  // Whether the rounding of the world's time moves one of an event's balls measurably.
+  [[nodiscard]] bool time_too_coarse(const detail::Event& event) const;
   // Refuses a run whose time is too large for its balls' motion ("has stalled").
   [[noreturn]] void refuse_stalled(const char* function, const detail::Event& last) const;
   // Refuses a run that would never end after `count` events at one instant or contacts without

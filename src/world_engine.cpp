@@ -523,7 +523,8 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
   return resolved;
 }
 
-bool World::Impl::moved_measurably(const Event& contact, double elapsed) const {
+CAROM_ALWAYS_INLINE inline bool World::Impl::moved_measurably(const Event& contact,
+                                                              double elapsed) const {
   if (elapsed == kInfinity) return true;  // the run's first contact
   const auto moved = [&](std::uint32_t ball) {
     const BallSlot& b = balls[ball];
@@ -535,7 +536,7 @@ bool World::Impl::moved_measurably(const Event& contact, double elapsed) const {
   return moved(contact.owner) || (contact.kind == EventKind::ball_ball && moved(contact.partner));
 }
 
-bool World::Impl::time_too_coarse(const Event& event) const {
+CAROM_ALWAYS_INLINE inline bool World::Impl::time_too_coarse(const Event& event) const {
   // Neighbouring doubles near t are at most t·2⁻⁵² apart.
   const double time_step = std::abs(time) * 0x1p-52;
   const auto coarse = [&](std::uint32_t ball) {

@@ -472,8 +472,9 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
   // Runs that would never end the other way: contacts coming ever faster, each with motion.
   detail::ContactPace pace;
   const bool prefetching = live_count >= kPrefetchMinBalls;
+  const std::uint64_t sort_after = kSortEvents * live_count + kSortMinEvents;
   for (;;) {
-    if (++events_since_sort > kSortEvents * live_count + kSortMinEvents) sort_by_cell();
+    if (++events_since_sort > sort_after) sort_by_cell();
     const Event event = queue.top();
     if (!(event.time <= end) || event.time == kInfinity) break;
     if (prefetching) prefetch_likely_next();

@@ -36,12 +36,16 @@ class EventQueue {
   // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();
-  // The owners of the events likeliest to come up after the top one, for prefetching their
-  // data while the top one is processed: the top's two children in the heap and the first two
-  // of the next bucket. Writes up to four, returns how many.
-  int likely_next(std::uint32_t out[4]) const {
+  // The balls of the events likeliest to come up after the top one, for prefetching their data
+  // while the top one is processed: the top's two children in the heap, with the partners of
+  // those that are pair contacts, and the owners of the first two events of the next bucket.
+  // Writes up to six, returns how many.
+  int likely_next(std::uint32_t out[6]) const {
     int count = 0;
-    for (std::size_t k = 1; k <= 2 && k < heap_.size(); ++k) out[count++] = heap_[k].owner();
+    for (std::size_t k = 1; k <= 2 && k < heap_.size(); ++k) {
+      out[count++] = heap_[k].owner();
+      if (heap_[k].kind() == EventKind::ball_ball) out[count++] = heap_[k].partner;
+    }
     if (year_open_ && current_ + 1 < year_end_) {
       const auto next = static_cast<std::size_t>(current_ + 1) & (buckets_.size() - 1);
       std::uint32_t owner = buckets_[next];

@@ -439,7 +439,7 @@ void World::Impl::predict(std::uint32_t ball) {
 // entries and queue slots are asked for now, so that they arrive while this event is processed
 // rather than one after another when theirs is (docs/performance.md, "eighth slice").
 CAROM_ALWAYS_INLINE inline void World::Impl::prefetch_likely_next() const {
-  std::uint32_t owners[4];
+  std::uint32_t owners[6];
   const int count = queue.likely_next(owners);
   for (int k = 0; k < count; ++k) {
     __builtin_prefetch(&balls[owners[k]]);

@@ -380,8 +380,8 @@ void World::Impl::predict(std::uint32_t ball) {
   // How a neighbour's offset is taken: as it is, as the minimum image, or as the minimum image
   // and its eight neighbouring images (periodic grids with few cells, below).
   enum Images { kDirect, kNearest, kAround };
-  const auto gather = [&](std::int32_t neighbour, auto images) CAROM_ALWAYS_INLINE {
-    for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
+  const auto gather_list = [&](std::int32_t first, auto images) CAROM_ALWAYS_INLINE {
+    for (std::int32_t j = first; j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == ball) continue;
@@ -407,6 +407,9 @@ void World::Impl::predict(std::uint32_t ball) {
       if (batch.full()) solve_batch();
     }
   };
+  const auto gather = [&](std::int32_t neighbour, auto images) CAROM_ALWAYS_INLINE {
+    gather_list(grid.first_ball(neighbour), images);
+  };
   using Direct = std::integral_constant<Images, kDirect>;
   using Nearest = std::integral_constant<Images, kNearest>;
   using Around = std::integral_constant<Images, kAround>;
@@ -420,9 +423,21 @@ void World::Impl::predict(std::uint32_t ball) {
   if (few_cells) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Around{}); });
   } else if (interior) {
-    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
-      const std::int32_t first = grid.index(cx - 1, row);
-      for (std::int32_t k = 0; k < 3; ++k) gather(first + k, Direct{});
+    // Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3): the heads are read
+    // first and only the lists of occupied cells walked, in the same order, so that an empty
+    // cell costs a comparison rather than a turn of the loop and a branch that often mispredicts.
+    std::int32_t heads[9];
+    std::uint32_t occupied = 0;
+    for (int row = 0; row < 3; ++row) {
+      const std::int32_t first = grid.index(cx - 1, cy - 1 + row);
+      for (int k = 0; k < 3; ++k) {
+        const int at = 3 * row + k;
+        heads[at] = grid.first_ball(first + k);
+        occupied |= static_cast<std::uint32_t>(heads[at] != detail::kNoBall) << at;
+      }
+    }
+    for (; occupied != 0; occupied &= occupied - 1) {
+      gather_list(heads[std::countr_zero(occupied)], Direct{});
     }
   } else if (periodic) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Nearest{}); });

@@ -58,15 +58,17 @@ static_assert(PairBatch::kCapacity % kLanes == 0);
 // solve_pair's operations on four pairs at once.
 __attribute__((target("avx2"))) void solve_avx2(PairBatch& batch, double horizon) {
   // The last group's unused lanes get pairs moving apart (which miss); their outcomes are never
-  // read, since the caller reads `count` of them.
+  // read, since the caller reads `count` of them. Four lanes are always written (the arrays have
+  // room), whatever the count: no loop, no branch.
   const std::size_t padded = (batch.count + kLanes - 1) / kLanes * kLanes;
-  for (std::size_t k = batch.count; k < padded; ++k) {
-    batch.sx[k] = 1.0;
-    batch.sy[k] = 1.0;
-    batch.ux[k] = 1.0;
-    batch.uy[k] = 1.0;
-    batch.reach[k] = 0.5;
-  }
+  static_assert(PairBatch::kInputCapacity >= PairBatch::kCapacity + kLanes);
+  const __m256d apart = _mm256_set1_pd(1.0);
+  const __m256d half = _mm256_set1_pd(0.5);
+  _mm256_storeu_pd(&batch.sx[batch.count], apart);
+  _mm256_storeu_pd(&batch.sy[batch.count], apart);
+  _mm256_storeu_pd(&batch.ux[batch.count], apart);
+  _mm256_storeu_pd(&batch.uy[batch.count], apart);
+  _mm256_storeu_pd(&batch.reach[batch.count], half);
   const __m256d zero = _mm256_setzero_pd();
   const __m256d low = _mm256_set1_pd(kSquareLow);
   const __m256d high = _mm256_set1_pd(kSquareHigh);

@@ -17,16 +17,19 @@ namespace carom::detail {
 
 struct PairBatch {
   static constexpr std::size_t kCapacity = 32;  // a bit of a 32-bit mask per pair
+  // The inputs' arrays hold four pairs more, so that solve pads the last group of four without
+  // a loop whose length (and so whose exit branch) changes from batch to batch.
+  static constexpr std::size_t kInputCapacity = kCapacity + 4;
   enum Outcome : std::uint8_t { kMiss = 0, kHit = 1, kRescale = 2 };
 
   // (The cache-line-aligned arrays first, the small ones after: no padding between them.)
   // Pair k: the offset s (this ball minus the neighbour), the relative velocity u and the sum of
   // the radii; the neighbour's slot.
-  alignas(64) std::array<double, kCapacity> sx;
-  alignas(64) std::array<double, kCapacity> sy;
-  alignas(64) std::array<double, kCapacity> ux;
-  alignas(64) std::array<double, kCapacity> uy;
-  alignas(64) std::array<double, kCapacity> reach;
+  alignas(64) std::array<double, kInputCapacity> sx;
+  alignas(64) std::array<double, kInputCapacity> sy;
+  alignas(64) std::array<double, kInputCapacity> ux;
+  alignas(64) std::array<double, kInputCapacity> uy;
+  alignas(64) std::array<double, kInputCapacity> reach;
   // Filled by solve(): the time from now of each hit, and what became of the pairs as bit masks
   // (bit k for pair k), so that the caller visits the few hits alone: pairs that hit, and pairs
   // outside the exact range (whose answer is the scalar, rescaled path's; the rest miss).
@@ -44,6 +47,12 @@ struct PairBatch {
     reach[count] = radius_sum;
     other[count] = neighbour;
     ++count;
+  }
+  // push, but a pair that is `dropped` is written and not counted (the next push overwrites it):
+  // no branch.
+  void push_unless(Vec2 s, Vec2 u, double radius_sum, std::uint32_t neighbour, bool dropped) {
+    push(s, u, radius_sum, neighbour);
+    count -= static_cast<std::size_t>(dropped);
   }
   [[nodiscard]] bool full() const { return count == kCapacity; }
   [[nodiscard]] Outcome outcome(std::size_t k) const {

@@ -306,28 +306,30 @@ void World::Impl::predict(std::uint32_t ball) {
   best.owner = ball;
 
   // Leaving the cell, through the side it moves towards on each axis (x first on a tie). In a
-  // box the outermost cells have no outer side to leave through.
+  // box the outermost cells have no outer side to leave through. Written as selections, not
+  // branches: the signs of a ball's velocity are random, and a mispredicted branch costs more
+  // than computing both sides.
   const std::int32_t cell = grid.cell_of_ball(ball);
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
   const bool wraps = def.boundary != Boundary::box;
   const Vec2 low = grid.cell_lower(cx, cy);
   const Vec2 high = grid.cell_lower(cx + 1, cy + 1);  // the upper-right corner
-  if (v.x > 0.0 ? (wraps || cx + 1 < grid.nx()) : (v.x < 0.0 && (wraps || cx > 0))) {
-    const double distance = v.x > 0.0 ? high.x - p.x : low.x - p.x;
-    best.time = time + std::max(0.0, distance / v.x);
-    best.kind = EventKind::cell_crossing;
-    best.partner = v.x > 0.0 ? detail::kRight : detail::kLeft;
-  }
-  if (v.y > 0.0 ? (wraps || cy + 1 < grid.ny()) : (v.y < 0.0 && (wraps || cy > 0))) {
-    const double distance = v.y > 0.0 ? high.y - p.y : low.y - p.y;
-    const double t = time + std::max(0.0, distance / v.y);
-    if (t < best.time) {
-      best.time = t;
-      best.kind = EventKind::cell_crossing;
-      best.partner = v.y > 0.0 ? detail::kUp : detail::kDown;
-    }
-  }
+  const bool leaves_x =
+      v.x > 0.0 ? (wraps || cx + 1 < grid.nx()) : (v.x < 0.0 && (wraps || cx > 0));
+  const bool leaves_y =
+      v.y > 0.0 ? (wraps || cy + 1 < grid.ny()) : (v.y < 0.0 && (wraps || cy > 0));
+  const double exit_x =
+      leaves_x ? time + std::max(0.0, ((v.x > 0.0 ? high.x : low.x) - p.x) / v.x) : kInfinity;
+  const double exit_y =
+      leaves_y ? time + std::max(0.0, ((v.y > 0.0 ? high.y : low.y) - p.y) / v.y) : kInfinity;
+  const bool through_y = exit_y < exit_x;
+  best.time = through_y ? exit_y : exit_x;
+  best.kind = EventKind::cell_crossing;
+  // (A ball that leaves through no side keeps the default partner, 0.)
+  const std::uint32_t side_x = leaves_x && v.x > 0.0 ? detail::kRight : detail::kLeft;
+  const std::uint32_t side_y = v.y > 0.0 ? detail::kUp : detail::kDown;
+  best.partner = through_y ? side_y : side_x;
 
   // Walls listed in this cell.
   const detail::Species& kind = species[b.species];
@@ -384,7 +386,12 @@ void World::Impl::predict(std::uint32_t ball) {
     for (std::int32_t j = first; j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
-      if (other == ball) continue;
+      // The ball itself is in its cell's list: pushed and then dropped (count not advanced)
+      // rather than skipped by a branch, which mispredicts wherever it sits in the list. (Its
+      // offset and relative velocity are zero: it would miss in the kernel anyway.)
+      if constexpr (images == kAround) {
+        if (other == ball) continue;
+      }
       const BallSlot& o = balls[other];
       const detail::Species& other_kind = species[o.species];
       if (!movable && !other_kind.movable()) continue;  // nothing can respond
@@ -392,9 +399,9 @@ void World::Impl::predict(std::uint32_t ball) {
       const Vec2 u = v - o.velocity;
       const double reach = kind.radius + other_kind.radius;
       if constexpr (images == kDirect) {
-        batch.push(offset, u, reach, other);
+        batch.push_unless(offset, u, reach, other, other == ball);
       } else if constexpr (images == kNearest) {
-        batch.push(minimum_image(offset), u, reach, other);
+        batch.push_unless(minimum_image(offset), u, reach, other, other == ball);
       } else {
         const Vec2 nearest = minimum_image(offset);
         for (int kx = -1; kx <= 1; ++kx) {

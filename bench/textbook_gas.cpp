@@ -1,8 +1,11 @@
 // carom_textbook_gas: a textbook event-driven hard-disk simulator, the yardstick of issue 3's
 // speed goals ("a careful textbook implementation (one earliest event per ball, an indexed binary
 // heap, cell crossings)"), run on the same scene as carom_world_gas_probe and timed the same way.
-//   carom_textbook_gas N ETA COLLISIONS_PER_BALL [EQUILIBRATE_PER_BALL=2]
+//   carom_textbook_gas N ETA COLLISIONS_PER_BALL [EQUILIBRATE_PER_BALL=2] [SHUFFLED=0]
 //   carom_textbook_gas --check
+// SHUFFLED=1 numbers the balls in the random order in which carom_world_gas_probe's SHUFFLED=1
+// adds them (the same permutation), so that neighbours are far apart in memory; the textbook
+// simulator never re-orders its balls.
 // The simulator is the one of Rapaport, Allen & Tildesley and Lubachevsky, written plainly:
 // - equal disks (diameter 1, mass 1) in a periodic square box, distances by minimum image;
 // - a uniform grid with as many cells per axis as fit with cells no smaller than a diameter, each
@@ -29,6 +32,7 @@
 #include <cstring>
 #include <ctime>
 #include <limits>
+#include <random>
 #include <span>
 #include <utility>
 #include <vector>
@@ -467,6 +471,22 @@ Start start_of(const carom::World& world, double side) {
   return start;
 }
 
+// The same balls numbered in the random order of carom_world_gas_probe's SHUFFLED=1.
+Start shuffled(const Start& start) {
+  std::vector<std::size_t> order(start.x.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(2));
+  Start result;
+  result.side = start.side;
+  for (const std::size_t i : order) {
+    result.x.push_back(start.x[i]);
+    result.y.push_back(start.y[i]);
+    result.vx.push_back(start.vx[i]);
+    result.vy.push_back(start.vy[i]);
+  }
+  return result;
+}
+
 textbook::Gas gas_of(const Start& start) {
   return textbook::Gas(start.side, start.x, start.y, start.vx, start.vy);
 }
@@ -572,7 +592,9 @@ int check() {
 int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "--check") == 0) return check();
   if (argc < 4) {
-    std::fprintf(stderr, "usage: %s N ETA COLLISIONS_PER_BALL [EQUILIBRATE_PER_BALL=2]\n", argv[0]);
+    std::fprintf(stderr,
+                 "usage: %s N ETA COLLISIONS_PER_BALL [EQUILIBRATE_PER_BALL=2] [SHUFFLED=0]\n",
+                 argv[0]);
     std::fprintf(stderr, "       %s --check\n", argv[0]);
     return 2;
   }
@@ -580,6 +602,7 @@ int main(int argc, char** argv) {
   const double eta = std::atof(argv[2]);
   const double per_ball = std::atof(argv[3]);
   const double equilibrate = argc > 4 ? std::atof(argv[4]) : 2.0;
+  const bool shuffle = argc > 5 && std::atoi(argv[5]) != 0;
   const carom::cli::HardDiskLayout layout = carom::cli::hard_disk_layout(n, eta);
   if (n == 0 || !layout.box_wide_enough() || !layout.disks_fit()) {
     std::fprintf(stderr, "the triangular lattice cannot hold %llu disks at packing %g\n",
@@ -594,6 +617,7 @@ int main(int argc, char** argv) {
     const carom::World world = carom::cli::make_hard_disk_world(layout, 1);
     start = start_of(world, layout.side);
   }
+  if (shuffle) start = shuffled(start);
 #ifdef __GLIBC__
   malloc_trim(0);
 #endif
@@ -610,10 +634,10 @@ int main(int argc, char** argv) {
   const double cpu = cpu_seconds() - cpu_start;
   const auto count = static_cast<double>(collisions);
   std::printf(
-      "n=%llu eta=%.2f cells=%u^2 collisions=%llu cpu_s=%.3f cpu_rate=%.0fk/s "
+      "n=%llu eta=%.2f shuffled=%d cells=%u^2 collisions=%llu cpu_s=%.3f cpu_rate=%.0fk/s "
       "cpu_ns_per_collision=%.0f crossings_per_collision=%.3f stale_per_collision=%.3f "
       "bytes_per_ball=%.0f array_bytes_per_ball=%.0f energy_drift=%.2e\n",
-      static_cast<unsigned long long>(n), eta, gas.cells_per_axis(),
+      static_cast<unsigned long long>(n), eta, shuffle ? 1 : 0, gas.cells_per_axis(),
       static_cast<unsigned long long>(collisions), cpu, count / cpu / 1e3, cpu / count * 1e9,
       static_cast<double>(gas.crossings() - crossings_before) / count,
       static_cast<double>(gas.stale() - stale_before) / count,

@@ -315,21 +315,26 @@ void World::Impl::predict(std::uint32_t ball) {
   const bool wraps = def.boundary != Boundary::box;
   const Vec2 low = grid.cell_lower(cx, cy);
   const Vec2 high = grid.cell_lower(cx + 1, cy + 1);  // the upper-right corner
-  const bool leaves_x =
-      v.x > 0.0 ? (wraps || cx + 1 < grid.nx()) : (v.x < 0.0 && (wraps || cx > 0));
-  const bool leaves_y =
-      v.y > 0.0 ? (wraps || cy + 1 < grid.ny()) : (v.y < 0.0 && (wraps || cy > 0));
-  const double exit_x =
-      leaves_x ? time + std::max(0.0, ((v.x > 0.0 ? high.x : low.x) - p.x) / v.x) : kInfinity;
-  const double exit_y =
-      leaves_y ? time + std::max(0.0, ((v.y > 0.0 ? high.y : low.y) - p.y) / v.y) : kInfinity;
-  const bool through_y = exit_y < exit_x;
-  best.time = through_y ? exit_y : exit_x;
+  // (& and | on the conditions, both exits computed and the choices made by indexing pairs of
+  // values: GCC turns a ?: between doubles into a branch. An exit not taken may divide by zero,
+  // harmlessly.)
+  const bool leaves_x = ((v.x > 0.0) & (wraps | (cx + 1 < grid.nx()))) |
+                        ((v.x < 0.0) & (wraps | (cx > 0)));
+  const bool leaves_y = ((v.y > 0.0) & (wraps | (cy + 1 < grid.ny()))) |
+                        ((v.y < 0.0) & (wraps | (cy > 0)));
+  const double sides_x[2] = {low.x, high.x};
+  const double sides_y[2] = {low.y, high.y};
+  const double exit_x[2] = {kInfinity, time + std::max(0.0, (sides_x[v.x > 0.0] - p.x) / v.x)};
+  const double exit_y[2] = {kInfinity, time + std::max(0.0, (sides_y[v.y > 0.0] - p.y) / v.y)};
+  const double exits[2] = {exit_x[leaves_x], exit_y[leaves_y]};
+  const bool through_y = exits[1] < exits[0];
+  best.time = exits[through_y];
   best.kind = EventKind::cell_crossing;
   // (A ball that leaves through no side keeps the default partner, 0.)
-  const std::uint32_t side_x = leaves_x && v.x > 0.0 ? detail::kRight : detail::kLeft;
+  const std::uint32_t side_x = leaves_x & (v.x > 0.0) ? detail::kRight : detail::kLeft;
   const std::uint32_t side_y = v.y > 0.0 ? detail::kUp : detail::kDown;
-  best.partner = through_y ? side_y : side_x;
+  const std::uint32_t sides[2] = {side_x, side_y};
+  best.partner = sides[through_y];
 
   // Walls listed in this cell.
   const detail::Species& kind = species[b.species];
@@ -776,8 +781,12 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t) {
   const std::int32_t cell = grid.cell_of_ball(ball);
   std::int32_t cx = grid.column(cell);
   std::int32_t cy = grid.row(cell);
-  cx += side == detail::kRight ? 1 : (side == detail::kLeft ? -1 : 0);
-  cy += side == detail::kUp ? 1 : (side == detail::kDown ? -1 : 0);
+  // By table, indexed by the side: which side is random, a branch on it mispredicts.
+  static constexpr std::int32_t kStepX[4] = {-1, 1, 0, 0};  // kLeft, kRight, kDown, kUp
+  static constexpr std::int32_t kStepY[4] = {0, 0, -1, 1};
+  static_assert(detail::kLeft == 0 && detail::kRight == 1 && detail::kDown == 2 && detail::kUp == 3);
+  cx += kStepX[side & 3];
+  cy += kStepY[side & 3];
   if (def.boundary == Boundary::periodic) {
     // Leaving the periodic cell: re-enter at the opposite side, the position shifted by a period.
     const Vec2 size = def.upper - def.lower;

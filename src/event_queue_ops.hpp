@@ -75,10 +75,13 @@ inline void EventQueue::remove(std::uint32_t owner) {
   }
 }
 
+// The links are written through selected addresses rather than under branches: whether a list
+// is empty, or a ball last in it, is random, and such branches mispredicted often (a write whose
+// target does not matter goes to the moving ball's own link, which is set right after).
 inline void EventQueue::list_push(std::uint32_t& head, std::uint32_t owner, Place place) {
+  link_prev_[head != kNoEvent ? head : owner] = owner;
   link_prev_[owner] = kNoEvent;
   link_next_[owner] = head;
-  if (head != kNoEvent) link_prev_[head] = owner;
   head = owner;
   places_[owner] = place;
   ++outside_heap_;
@@ -87,12 +90,10 @@ inline void EventQueue::list_push(std::uint32_t& head, std::uint32_t owner, Plac
 inline void EventQueue::list_remove(std::uint32_t& head, std::uint32_t owner) {
   const std::uint32_t before_it = link_prev_[owner];
   const std::uint32_t after_it = link_next_[owner];
-  if (before_it != kNoEvent) {
-    link_next_[before_it] = after_it;
-  } else {
-    head = after_it;
-  }
-  if (after_it != kNoEvent) link_prev_[after_it] = before_it;
+  *(before_it != kNoEvent ? &link_next_[before_it] : &head) = after_it;
+  // (See list_push; by a mask, since GCC keeps a branch for the ?: form here.)
+  const std::uint32_t last = 0U - static_cast<std::uint32_t>(after_it == kNoEvent);
+  link_prev_[(owner & last) | (after_it & ~last)] = before_it;
   places_[owner] = Place::none;
   --outside_heap_;
 }

@@ -367,7 +367,9 @@ void World::Impl::predict(std::uint32_t ball) {
     candidate.owner = ball;
     candidate.partner = other;
     candidate.partner_version = balls[other].version;
-    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
+    // Selected, not branched on: whether a hit comes before the best so far is random.
+    const Event options[2] = {best, candidate};
+    best = options[detail::earlier(candidate, best, handle_of.data())];
   };
   const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
     batch.solve(kFarFuture);

@@ -331,7 +331,7 @@ void World::Impl::predict(std::uint32_t ball) {
   best.time = exits[through_y];
   best.kind = EventKind::cell_crossing;
   // (A ball that leaves through no side keeps the default partner, 0.)
-  const std::uint32_t side_x = leaves_x & (v.x > 0.0) ? detail::kRight : detail::kLeft;
+  const std::uint32_t side_x = (leaves_x & (v.x > 0.0)) ? detail::kRight : detail::kLeft;
   const std::uint32_t side_y = v.y > 0.0 ? detail::kUp : detail::kDown;
   const std::uint32_t sides[2] = {side_x, side_y};
   best.partner = sides[through_y];

@@ -325,10 +325,10 @@ void World::Impl::predict(std::uint32_t ball) {
   // (& and | on the conditions, both exits computed and the choices made by indexing pairs of
   // values: GCC turns a ?: between doubles into a branch. An exit not taken may divide by zero,
   // harmlessly.)
-  const bool leaves_x = ((v.x > 0.0) & (wraps | (cx + 1 < grid.nx()))) |
-                        ((v.x < 0.0) & (wraps | (cx > 0)));
-  const bool leaves_y = ((v.y > 0.0) & (wraps | (cy + 1 < grid.ny()))) |
-                        ((v.y < 0.0) & (wraps | (cy > 0)));
+  const bool leaves_x =
+      ((v.x > 0.0) & (wraps | (cx + 1 < grid.nx()))) | ((v.x < 0.0) & (wraps | (cx > 0)));
+  const bool leaves_y =
+      ((v.y > 0.0) & (wraps | (cy + 1 < grid.ny()))) | ((v.y < 0.0) & (wraps | (cy > 0)));
   const double sides_x[2] = {low.x, high.x};
   const double sides_y[2] = {low.y, high.y};
   const double exit_x[2] = {kInfinity, time + std::max(0.0, (sides_x[v.x > 0.0] - p.x) / v.x)};
@@ -428,9 +428,8 @@ void World::Impl::predict(std::uint32_t ball) {
       if (batch.full()) solve_batch();
     }
   };
-  const auto gather = [&](std::int32_t neighbour, auto images) CAROM_ALWAYS_INLINE {
-    gather_list(grid.first_ball(neighbour), images);
-  };
+  const auto gather = [&](std::int32_t neighbour, auto images)
+                          CAROM_ALWAYS_INLINE { gather_list(grid.first_ball(neighbour), images); };
   using Direct = std::integral_constant<Images, kDirect>;
   using Nearest = std::integral_constant<Images, kNearest>;
   using Around = std::integral_constant<Images, kAround>;
@@ -799,7 +798,8 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t) {
   // By table, indexed by the side: which side is random, a branch on it mispredicts.
   static constexpr std::int32_t kStepX[4] = {-1, 1, 0, 0};  // kLeft, kRight, kDown, kUp
   static constexpr std::int32_t kStepY[4] = {0, 0, -1, 1};
-  static_assert(detail::kLeft == 0 && detail::kRight == 1 && detail::kDown == 2 && detail::kUp == 3);
+  static_assert(detail::kLeft == 0 && detail::kRight == 1 && detail::kDown == 2 &&
+                detail::kUp == 3);
   cx += kStepX[side & 3];
   cy += kStepY[side & 3];
   if (def.boundary == Boundary::periodic) {

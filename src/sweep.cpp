@@ -218,8 +218,18 @@ double segment_fraction(const Segment& segment, Vec2 p) {
 
 Vec2 point_on_segment(const Segment& segment, double fraction) {
   const Vec2 along = segment.b - segment.a;
-  if (is_finite(along)) return segment.a + along * fraction;
-  return segment.a * (1.0 - fraction) + segment.b * fraction;
+  if (is_finite(along)) {
+    const Vec2 at = segment.a + along * fraction;
+    if (is_finite(at)) [[likely]]
+      return at;
+  }
+  // Near the end of the double range a + (b − a)·f can round past the largest double (at f = 1
+  // too: the toi fuzzer's smoke run found b = (1, −max), a + (b − a) = (0, −∞)). The weighted
+  // mean of the ends cannot overflow but by a rounding, which the ends' box then takes back.
+  const Vec2 mean = segment.a * (1.0 - fraction) + segment.b * fraction;
+  return {
+      std::clamp(mean.x, std::min(segment.a.x, segment.b.x), std::max(segment.a.x, segment.b.x)),
+      std::clamp(mean.y, std::min(segment.a.y, segment.b.y), std::max(segment.a.y, segment.b.y))};
 }
 
 Vec2 nearest_on_segment(const Segment& segment, Vec2 p) {

@@ -203,6 +203,20 @@ TEST(SweepExtremeRegression, TinyBallsFarApartHeadOn) {
                    .hit);
 }
 
+// Found by the time-of-impact fuzzer's smoke run (session 8): a ball missing a segment that ends
+// at (1, −max) was given the nearest point a + (b − a)·1, which rounded to (0, −∞), and so a NaN
+// normal. The nearest point is now the end point itself.
+TEST(SweepExtremeRegression, NearestPointOfASegmentEndingAtTheRangesEdge) {
+  const Ball ball{{kMax, -kMax}, 1.7974796903477642e308};
+  const Vec2 velocity{-kMax, kMax};
+  const Segment segment{{-kMax, -6.460459703411447e307}, {0.9999999999999999, -kMax}};
+  const Impact impact = time_of_impact_ball_segment(ball, velocity, segment, 2.525e-321);
+  EXPECT_FALSE(impact.hit);
+  EXPECT_TRUE(is_finite(impact.point)) << impact.point.x << ", " << impact.point.y;
+  EXPECT_TRUE(is_finite(impact.normal)) << impact.normal.x << ", " << impact.normal.y;
+  EXPECT_EQ(impact.point, segment.b);
+}
+
 // ---- any finite input ------------------------------------------------------------------------
 
 // Doubles from the whole finite range: ordinary values, the extremes, subnormals, and random

@@ -30,13 +30,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <limits>
-#include <random>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "gas_run_support.hpp"
 #include "hard_disk_setup.hpp"
 
 #ifdef __GLIBC__     // defined by the standard headers above
@@ -434,12 +433,6 @@ class Gas {
 
 namespace {
 
-double cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
 // The resident set now, in KiB (/proc/self/statm), or -1 where it cannot be read.
 long resident_kib() {
   std::FILE* file = std::fopen("/proc/self/statm", "r");
@@ -473,12 +466,9 @@ Start start_of(const carom::World& world, double side) {
 
 // The same balls numbered in the random order of carom_world_gas_probe's SHUFFLED=1.
 Start shuffled(const Start& start) {
-  std::vector<std::size_t> order(start.x.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::shuffle(order.begin(), order.end(), std::mt19937_64(2));
   Start result;
   result.side = start.side;
-  for (const std::size_t i : order) {
+  for (const std::size_t i : carom::bench::shuffled_order(start.x.size())) {
     result.x.push_back(start.x[i]);
     result.y.push_back(start.y[i]);
     result.vx.push_back(start.vx[i]);
@@ -632,9 +622,9 @@ int main(int argc, char** argv) {
   const std::uint64_t crossings_before = gas.crossings();
   const std::uint64_t stale_before = gas.stale();
   const auto wanted = static_cast<std::uint64_t>(per_ball * static_cast<double>(n));
-  const double cpu_start = cpu_seconds();
+  const double cpu_start = carom::bench::cpu_seconds();
   const std::uint64_t collisions = gas.run_collisions(wanted);
-  const double cpu = cpu_seconds() - cpu_start;
+  const double cpu = carom::bench::cpu_seconds() - cpu_start;
   const auto count = static_cast<double>(collisions);
   std::printf(
       "n=%llu eta=%.2f shuffled=%d cells=%u^2 collisions=%llu cpu_s=%.3f cpu_rate=%.0fk/s "

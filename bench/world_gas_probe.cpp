@@ -9,15 +9,13 @@
 // Figures: docs/performance.md, "World (issue 3), second slice".
 #include <sys/resource.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
-#include <random>
 #include <vector>
 
+#include "gas_run_support.hpp"
 #include "hard_disk_setup.hpp"
 
 namespace {
@@ -28,12 +26,6 @@ long peak_resident_kib() {
   return usage.ru_maxrss;
 }
 
-double cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
 double seconds_between(std::chrono::steady_clock::time_point a,
                        std::chrono::steady_clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -41,14 +33,14 @@ double seconds_between(std::chrono::steady_clock::time_point a,
 
 // The same balls (positions, velocities, sizes, masses) added to a fresh world in a random order.
 carom::World added_in_random_order(const carom::World& source, double side) {
-  std::vector<carom::BallId> ids = source.balls();
-  std::shuffle(ids.begin(), ids.end(), std::mt19937_64(2));
+  const std::vector<carom::BallId> ids = source.balls();
   carom::WorldDef def;
   def.boundary = carom::Boundary::periodic;
   def.lower = {0.0, 0.0};
   def.upper = {side, side};
   carom::World world(def);
-  for (const carom::BallId id : ids) {
+  for (const std::size_t k : carom::bench::shuffled_order(ids.size())) {
+    const carom::BallId id = ids[k];
     carom::BallDef ball;
     ball.position = source.position(id);
     ball.velocity = source.velocity(id);
@@ -92,9 +84,9 @@ int main(int argc, char** argv) {
   const double energy_before = world.kinetic_energy();
   const auto wanted = static_cast<std::uint64_t>(per_ball * static_cast<double>(n));
   const auto timed_start = std::chrono::steady_clock::now();
-  const double cpu_start = cpu_seconds();
+  const double cpu_start = carom::bench::cpu_seconds();
   const std::uint64_t collisions = world.run_collisions(wanted);
-  const double cpu = cpu_seconds() - cpu_start;
+  const double cpu = carom::bench::cpu_seconds() - cpu_start;
   const double wall = seconds_between(timed_start, std::chrono::steady_clock::now());
   const auto count = static_cast<double>(collisions);
   std::printf(

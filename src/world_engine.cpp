@@ -400,9 +400,9 @@ void World::Impl::predict(std::uint32_t ball) {
     for (std::int32_t j = first; j != detail::kNoBall;
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
-      // The ball itself is in its cell's list: pushed and then dropped (count not advanced)
-      // rather than skipped by a branch, which mispredicts wherever it sits in the list. (Its
-      // offset and relative velocity are zero: it would miss in the kernel anyway.)
+      // The ball itself is in its cell's list. The one-image paths push it and drop it (count
+      // not advanced, below) rather than skip it by a branch, which mispredicts wherever it sits
+      // in the list; the nine-image path (small periodic grids, rare) skips it here.
       if constexpr (images == kAround) {
         if (other == ball) continue;
       }

@@ -12,6 +12,7 @@ void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool p
   lower_ = lower;
   cell_ = cell;
   nx_ = nx;
+  rows_ = FixedDivisor(static_cast<std::uint32_t>(nx));
   ny_ = ny;
   periodic_ = periodic;
   const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "carom/vec2.hpp"
+#include "fixed_divisor.hpp"
 #include "huge_page_allocator.hpp"
 
 namespace carom::detail {
@@ -35,8 +36,11 @@ class Grid {
   [[nodiscard]] Vec2 upper() const { return lower_ + Vec2{cell_.x * nx_, cell_.y * ny_}; }
   [[nodiscard]] bool periodic() const { return periodic_; }
   [[nodiscard]] std::int32_t index(std::int32_t cx, std::int32_t cy) const { return cy * nx_ + cx; }
-  [[nodiscard]] std::int32_t column(std::int32_t cell) const { return cell % nx_; }
-  [[nodiscard]] std::int32_t row(std::int32_t cell) const { return cell / nx_; }
+  // (Cell numbers are below 2^31: the row by multiplication, not a division instruction.)
+  [[nodiscard]] std::int32_t row(std::int32_t cell) const {
+    return static_cast<std::int32_t>(rows_.divide(static_cast<std::uint32_t>(cell)));
+  }
+  [[nodiscard]] std::int32_t column(std::int32_t cell) const { return cell - row(cell) * nx_; }
   // The cell column/row of a coordinate, clamped to the grid.
   [[nodiscard]] std::int32_t column_of(double x) const;
   [[nodiscard]] std::int32_t row_of(double y) const;
@@ -129,6 +133,7 @@ class Grid {
   Vec2 cell_{1.0, 1.0};
   std::int32_t nx_ = 1;
   std::int32_t ny_ = 1;
+  FixedDivisor rows_{1};  // division by nx_
   bool periodic_ = false;
   BigVector<std::int32_t> head_;       // by cell: first ball, or kNoBall
   BigVector<std::int32_t> next_;       // by ball

@@ -483,7 +483,9 @@ CAROM_ALWAYS_INLINE inline void World::Impl::prefetch_likely_next() const {
   std::uint32_t owners[6];
   const int count = queue.likely_next(owners);
   for (int k = 0; k < count; ++k) {
+    // (Both lines a 48-byte slot may straddle.)
     __builtin_prefetch(&balls[owners[k]]);
+    __builtin_prefetch(reinterpret_cast<const char*>(&balls[owners[k]]) + sizeof(BallSlot) - 1);
     grid.prefetch_for(owners[k]);
     queue.prefetch_slot(owners[k]);
   }

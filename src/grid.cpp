@@ -8,9 +8,10 @@
 namespace carom::detail {
 
 void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
-                 std::uint32_t ball_capacity) {
+                 std::uint32_t ball_capacity, Vec2 hysteresis) {
   lower_ = lower;
   cell_ = cell;
+  hysteresis_ = hysteresis;
   nx_ = nx;
   rows_ = FixedDivisor(static_cast<std::uint32_t>(nx));
   ny_ = ny;

@@ -4,6 +4,7 @@
 // walls are listed in every cell their box, grown by the cell size, overlaps.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -18,9 +19,12 @@ inline constexpr std::int32_t kNoBall = -1;
 
 class Grid {
  public:
-  // nx × ny cells of size `cell` (width, height) from `lower`; periodic wraps both axes.
+  // nx × ny cells of size `cell` (width, height) from `lower`; periodic wraps both axes. A ball
+  // leaves its cell only once its centre is `hysteresis` (per axis) beyond the cell's side, so
+  // that a ball's centre lies within its cell grown by that much; the cell less twice the
+  // hysteresis is what must hold the largest diameter (docs/world.md, "The broad phase").
   void setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
-             std::uint32_t ball_capacity);
+             std::uint32_t ball_capacity, Vec2 hysteresis);
   // Makes room for balls up to index capacity − 1 (new ones in no cell).
   void reserve_balls(std::uint32_t capacity);
   // Allocates for `count` balls without adding any (World::reserve).
@@ -32,6 +36,11 @@ class Grid {
   [[nodiscard]] std::int32_t nx() const { return nx_; }
   [[nodiscard]] std::int32_t ny() const { return ny_; }
   [[nodiscard]] Vec2 cell_size() const { return cell_; }
+  [[nodiscard]] Vec2 hysteresis() const { return hysteresis_; }
+  // The largest diameter the cells can hold: the cell less twice the hysteresis, per axis.
+  [[nodiscard]] double room() const {
+    return std::min(cell_.x - 2.0 * hysteresis_.x, cell_.y - 2.0 * hysteresis_.y);
+  }
   [[nodiscard]] Vec2 lower() const { return lower_; }
   [[nodiscard]] Vec2 upper() const { return lower_ + Vec2{cell_.x * nx_, cell_.y * ny_}; }
   [[nodiscard]] bool periodic() const { return periodic_; }
@@ -131,6 +140,7 @@ class Grid {
 
   Vec2 lower_;
   Vec2 cell_{1.0, 1.0};
+  Vec2 hysteresis_;
   std::int32_t nx_ = 1;
   std::int32_t ny_ = 1;
   FixedDivisor rows_{1};  // division by nx_

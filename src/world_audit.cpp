@@ -127,8 +127,9 @@ Violation World::Impl::audit_with_grid(double tolerance) const {
     const Vec2 high = grid.cell_upper(cell);
     // The engine files a ball in its new cell at the computed crossing time, when its centre may
     // sit a rounding on the old side; kCellMargin is the room the cells were sized with for that.
-    const Vec2 slack{detail::kCellMargin * (high.x - low.x + std::abs(p.x)),
-                     detail::kCellMargin * (high.y - low.y + std::abs(p.y))};
+    // A ball leaves its cell only the grid's hysteresis beyond its side.
+    const Vec2 slack{detail::kCellMargin * (high.x - low.x + std::abs(p.x)) + grid.hysteresis().x,
+                     detail::kCellMargin * (high.y - low.y + std::abs(p.y)) + grid.hysteresis().y};
     const bool outer_x = w.def.boundary == Boundary::box;  // a box's outer cells reach its walls
     const bool inside =
         (p.x >= low.x - slack.x || (outer_x && grid.column(cell) == 0)) &&

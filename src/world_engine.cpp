@@ -39,6 +39,21 @@ constexpr double kRoomOfScale = 0x1p-40;
 // rather than the grid huge.
 constexpr double kCellsPerBall = 4.0;
 constexpr double kMinCells = 1024.0;
+// A dilute world (fewer balls than this per cell of the smallest size) gets cells kDiluteCells
+// times that size, and the room beyond the diameter becomes the cells' hysteresis: a ball then
+// leaves its cell only this far past its side, so that one turning back near a side does not
+// cross twice (docs/world.md, "The broad phase"). At η = 0.3 (0.38 balls a cell) it cuts the
+// crossings a collision from 1.33 to 0.83; in denser gases crossings are few and the larger
+// blocks cost more than they save (docs/performance.md, tenth slice).
+constexpr double kDiluteBallsPerCell = 0.55;
+constexpr double kDiluteCells = 1.25;
+// The share of that room given to the hysteresis: all but a sliver, so that the cell less twice
+// the hysteresis stays above the diameter after rounding ...
+constexpr double kHysteresisShare = 0.999;
+// ... and at most this fraction of the cell, which keeps a periodic pair's offset between its
+// prediction and its contact under half a period from kSingleImageMinCells cells on (3.4 cells
+// at most: docs/world.md, "Boundaries"). Dilute cells have just under it; larger ones meet it.
+constexpr double kMostHysteresis = 0.1;
 // A grid is re-planned while balls are added once a re-plan would make its cells this much
 // smaller per side (the ball count has grown about 4 times: O(1) amortised per add_ball) ...
 constexpr double kAddCoarseness = 2.0;
@@ -96,9 +111,7 @@ constexpr std::uint32_t kCellByCellMinBalls = 1u << 19;
 
 void World::Impl::ensure_grid(Vec2 extra_point, double extra_radius) {
   if (grid_valid) {
-    const Vec2 cell = grid.cell_size();
-    const bool cell_fits =
-        2.0 * extra_radius * (1.0 + detail::kCellMargin) <= std::min(cell.x, cell.y);
+    const bool cell_fits = 2.0 * extra_radius * (1.0 + detail::kCellMargin) <= grid.room();
     const Vec2 lower = grid.lower();
     const Vec2 upper = grid.upper();
     const bool inside =
@@ -114,7 +127,11 @@ void World::Impl::ensure_grid(Vec2 extra_point, double extra_radius) {
 
 double World::Impl::wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
                                      double largest) const {
-  double cell = std::max(def.cell_size, 2.0 * largest * (1.0 + detail::kCellMargin));
+  const double diameter = 2.0 * largest * (1.0 + detail::kCellMargin);
+  double cell = std::max(def.cell_size, diameter);
+  const double balls_per_cell =
+      static_cast<double>(ball_total) * diameter * diameter / (extent_x * extent_y);
+  if (balls_per_cell < kDiluteBallsPerCell) cell = std::max(cell, kDiluteCells * diameter);
   const double max_cells = std::max(kMinCells, kCellsPerBall * static_cast<double>(ball_total));
   if (extent_x / cell * (extent_y / cell) > max_cells) {
     cell = std::sqrt(extent_x * extent_y / max_cells);
@@ -167,8 +184,17 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   const double cell = wanted_cell_size(extent.x, extent.y, ball_total, largest);
   const auto nx = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.x / cell)));
   const auto ny = static_cast<std::int32_t>(std::max(1.0, std::floor(extent.y / cell)));
-  grid.setup(lower, {extent.x / nx, extent.y / ny}, nx, ny, def.boundary == Boundary::periodic,
-             static_cast<std::uint32_t>(balls.size()));
+  const Vec2 cell_size{extent.x / nx, extent.y / ny};
+  // Every ball, those added later included, fits what the cells hold beyond the hysteresis
+  // (ensure_grid re-plans for a larger one); the rest of the room is hysteresis.
+  const double diameter = 2.0 * std::max(largest, largest_radius) * (1.0 + detail::kCellMargin);
+  const auto hysteresis_of = [&](double side) {
+    return std::min(kMostHysteresis * side,
+                    kHysteresisShare * std::max(0.0, (side - diameter) / 2.0));
+  };
+  const Vec2 hysteresis{hysteresis_of(cell_size.x), hysteresis_of(cell_size.y)};
+  grid.setup(lower, cell_size, nx, ny, def.boundary == Boundary::periodic,
+             static_cast<std::uint32_t>(balls.size()), hysteresis);
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive()) grid.insert(i, grid.cell_of(position_at(i, time)));
   }
@@ -320,8 +346,17 @@ void World::Impl::predict(std::uint32_t ball) {
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
   const bool wraps = def.boundary != Boundary::box;
-  const Vec2 low = grid.cell_lower(cx, cy);
-  const Vec2 high = grid.cell_lower(cx + 1, cy + 1);  // the upper-right corner
+  // The sides a ball leaves through are the grid's hysteresis beyond its cell's, but for the
+  // periodic cell's own sides, where it re-enters at the opposite side: positions stay in the
+  // cell as the API promises.
+  const bool edges = def.boundary == Boundary::periodic;
+  const double beyond_x[2] = {grid.hysteresis().x, 0.0};  // [on the periodic cell's side]
+  const double beyond_y[2] = {grid.hysteresis().y, 0.0};
+  const Vec2 low =
+      grid.cell_lower(cx, cy) - Vec2{beyond_x[edges & (cx == 0)], beyond_y[edges & (cy == 0)]};
+  const Vec2 high =
+      grid.cell_lower(cx + 1, cy + 1) +  // the upper-right corner
+      Vec2{beyond_x[edges & (cx + 1 == grid.nx())], beyond_y[edges & (cy + 1 == grid.ny())]};
   // (& and | on the conditions, both exits computed and the choices made by indexing pairs of
   // values: GCC turns a ?: between doubles into a branch. An exit not taken may divide by zero,
   // harmlessly.)

@@ -26,7 +26,9 @@ using detail::ByteWriter;
 namespace {
 
 constexpr char kMagic[8] = {'C', 'A', 'R', 'O', 'M', 'W', 'L', 'D'};
-constexpr std::uint32_t kVersion = 1;
+// 2: the grid's hysteresis (docs/world.md, "Saving and resuming"). A version-1 save is refused:
+// it was written by an engine whose run this build would not continue bit for bit anyway.
+constexpr std::uint32_t kVersion = 2;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -165,6 +167,7 @@ std::string World::Impl::save_payload() const {
   if (grid_valid) {
     out.vec2(grid.lower());
     out.vec2(grid.cell_size());
+    out.vec2(grid.hysteresis());
     out.i32(grid.nx());
     out.i32(grid.ny());
     for (const std::uint32_t i : slot_of_handle) {
@@ -389,6 +392,7 @@ void World::Impl::load_payload(ByteReader& in) {
 void World::Impl::load_grid(ByteReader& in) {
   const Vec2 lower = in.vec2("grid lower");
   const Vec2 cell = in.vec2("grid cell size");
+  const Vec2 hysteresis = in.vec2("grid hysteresis");
   const std::int32_t nx = in.i32("grid columns");
   const std::int32_t ny = in.i32("grid rows");
   const auto slots = static_cast<std::uint32_t>(balls.size());
@@ -406,7 +410,15 @@ void World::Impl::load_grid(ByteReader& in) {
                     "a grid has finite positive cells (or none if no ball) and at most " +
                         detail::number_text(most_cells) + " of them");
   }
-  grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, slots);
+  // The engine gives the hysteresis part of the room a cell has beyond the largest diameter.
+  const bool sized = hysteresis.x >= 0.0 && 2.0 * hysteresis.x < cell.x && hysteresis.y >= 0.0 &&
+                     2.0 * hysteresis.y < cell.y;
+  if (!finite(hysteresis) || !(sized || (hysteresis == Vec2{} && live_count == 0))) {
+    // (An empty open world's cells may have size 0, and then no hysteresis.)
+    in.inconsistent("grid hysteresis", detail::vector_text(hysteresis),
+                    "a cell's hysteresis is at least 0 and under half the cell");
+  }
+  grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, slots, hysteresis);
   const std::int32_t cells = nx * ny;
   std::vector<std::int32_t> cell_of(slots);
   for (std::uint32_t i = 0; i < slots; ++i) {

@@ -94,5 +94,30 @@ TEST(WorldGrid, GridAuditAgreesWithAllPairsAudit) {
   }
 }
 
+// A dilute gas gets cells with hysteresis (a ball leaves its cell some way past the side): the
+// balls must still stay inside the periodic cell (the cell's own sides have none, so that the
+// re-wrap happens there), inside the box, in their grid cells as the audit checks them, and
+// apart.
+TEST(WorldGrid, DiluteGasesStayInTheirCellsWithHysteresis) {
+  for (const Boundary boundary : {Boundary::periodic, Boundary::box}) {
+    World world = lattice(30, 2.5, boundary, 11);  // 900 balls at η = 0.13
+    const double extent = 30 * 2.5;
+    // Inside [0, extent), to the rounding of a re-wrap (the box: the radius inside the walls).
+    const double slack = 1e-9 * extent;
+    const double inset = boundary == Boundary::box ? kGridBallRadius : 0.0;
+    for (int chunk = 0; chunk < 40; ++chunk) {
+      world.run_until(world.time() + 0.5);
+      for (const BallId id : world.balls()) {
+        const Vec2 p = world.position(id);
+        ASSERT_TRUE(p.x >= inset - slack && p.x < extent - inset + slack && p.y >= inset - slack &&
+                    p.y < extent - inset + slack)
+            << "ball " << id.index << " at (" << p.x << ", " << p.y << "), chunk " << chunk;
+      }
+      ASSERT_FALSE(world.audit().has_value()) << *world.audit();
+    }
+    EXPECT_GT(world.collision_count(), 2000u);  // the gas did move and collide
+  }
+}
+
 }  // namespace
 }  // namespace carom

@@ -57,8 +57,9 @@ struct WorldDef {
   // bounces elastically, so that three or more inelastic balls cannot collide infinitely often in
   // finite time. 0 turns it off. See docs/world.md.
   double collapse_time = 0.0;
-  // Side of the broad-phase grid's cells; 0 chooses it (at least the largest diameter). A cell
-  // smaller than the largest diameter given here is raised to it.
+  // Side of the broad-phase grid's cells; 0 chooses it (at least the largest diameter; 1.25
+  // diameters in a dilute world). A cell smaller than the largest diameter given here is raised
+  // to it. Room beyond the diameter is used as the cells' hysteresis (docs/world.md).
   double cell_size = 0.0;
 };
 

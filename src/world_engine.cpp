@@ -48,12 +48,9 @@ constexpr double kMinCells = 1024.0;
 constexpr double kDiluteBallsPerCell = 0.55;
 constexpr double kDiluteCells = 1.25;
 // The share of that room given to the hysteresis: all but a sliver, so that the cell less twice
-// the hysteresis stays above the diameter after rounding ...
+// the hysteresis stays above the diameter after rounding (and at most detail::kMostHysteresis
+// of the cell).
 constexpr double kHysteresisShare = 0.999;
-// ... and at most this fraction of the cell, which keeps a periodic pair's offset between its
-// prediction and its contact under half a period from kSingleImageMinCells cells on (3.4 cells
-// at most: docs/world.md, "Boundaries"). Dilute cells have just under it; larger ones meet it.
-constexpr double kMostHysteresis = 0.1;
 // A grid is re-planned while balls are added once a re-plan would make its cells this much
 // smaller per side (the ball count has grown about 4 times: O(1) amortised per add_ball) ...
 constexpr double kAddCoarseness = 2.0;
@@ -189,7 +186,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   // (ensure_grid re-plans for a larger one); the rest of the room is hysteresis.
   const double diameter = 2.0 * std::max(largest, largest_radius) * (1.0 + detail::kCellMargin);
   const auto hysteresis_of = [&](double side) {
-    return std::min(kMostHysteresis * side,
+    return std::min(detail::kMostHysteresis * side,
                     kHysteresisShare * std::max(0.0, (side - diameter) / 2.0));
   };
   const Vec2 hysteresis{hysteresis_of(cell_size.x), hysteresis_of(cell_size.y)};

@@ -27,6 +27,11 @@ namespace detail {
 // crossing events, and at the moment it changes cells its computed centre may sit a rounding on
 // the old side. The margin keeps every ball that can touch it within the 3×3 block regardless.
 inline constexpr double kCellMargin = 1e-6;
+// A grid's hysteresis (grid.hpp) is at most this fraction of its cell: a periodic pair's offset
+// then moves by under 2.4 cells between its prediction and its contact, so it was under 3.4 when
+// predicted, below half a period from kSingleImageMinCells (7) cells on (docs/world.md,
+// "Boundaries"). Dilute cells have just under it; larger ones meet it.
+inline constexpr double kMostHysteresis = 0.1;
 
 inline constexpr std::uint32_t kNoSpecies = 0xFFFFFFFFu;  // a free slot's
 

@@ -410,13 +410,13 @@ void World::Impl::load_grid(ByteReader& in) {
                     "a grid has finite positive cells (or none if no ball) and at most " +
                         detail::number_text(most_cells) + " of them");
   }
-  // The engine gives the hysteresis part of the room a cell has beyond the largest diameter.
-  const bool sized = hysteresis.x >= 0.0 && 2.0 * hysteresis.x < cell.x && hysteresis.y >= 0.0 &&
-                     2.0 * hysteresis.y < cell.y;
-  if (!finite(hysteresis) || !(sized || (hysteresis == Vec2{} && live_count == 0))) {
-    // (An empty open world's cells may have size 0, and then no hysteresis.)
+  // The engine gives the hysteresis part of the room a cell has beyond the largest diameter, at
+  // most a tenth of the cell.
+  const bool sized = hysteresis.x >= 0.0 && hysteresis.x <= detail::kMostHysteresis * cell.x &&
+                     hysteresis.y >= 0.0 && hysteresis.y <= detail::kMostHysteresis * cell.y;
+  if (!finite(hysteresis) || !sized) {
     in.inconsistent("grid hysteresis", detail::vector_text(hysteresis),
-                    "a cell's hysteresis is at least 0 and under half the cell");
+                    "a cell's hysteresis is at least 0 and at most a tenth of the cell");
   }
   grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, slots, hysteresis);
   const std::int32_t cells = nx * ny;

@@ -347,7 +347,7 @@ void World::Impl::predict(std::uint32_t ball) {
   // periodic cell's own sides, where it re-enters at the opposite side: positions stay in the
   // cell as the API promises.
   const bool edges = def.boundary == Boundary::periodic;
-  const double beyond_x[2] = {grid.hysteresis().x, 0.0};  // [on the periodic cell's side]
+  const double beyond_x[2] = {grid.hysteresis().x, 0.0};  // [1]: a side of the periodic cell
   const double beyond_y[2] = {grid.hysteresis().y, 0.0};
   const Vec2 low =
       grid.cell_lower(cx, cy) - Vec2{beyond_x[edges & (cx == 0)], beyond_y[edges & (cy == 0)]};

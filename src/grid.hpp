@@ -64,6 +64,22 @@ class Grid {
   [[nodiscard]] Vec2 cell_lower(std::int32_t cx, std::int32_t cy) const {
     return {lower_.x + cell_.x * cx, lower_.y + cell_.y * cy};
   }
+  // The lower-left and upper-right corners of the box a ball in cell (cx, cy) leaves its cell
+  // through: the cell grown by the hysteresis, but for the periodic cell's own sides, where a
+  // ball re-enters at the opposite side (so that positions stay in the cell). By selection, not
+  // branches: which cell a ball is in is random.
+  [[nodiscard]] Vec2 exit_lower(std::int32_t cx, std::int32_t cy) const {
+    const double beyond_x[2] = {hysteresis_.x, 0.0};  // [1]: a side of the periodic cell
+    const double beyond_y[2] = {hysteresis_.y, 0.0};
+    return cell_lower(cx, cy) -
+           Vec2{beyond_x[periodic_ & (cx == 0)], beyond_y[periodic_ & (cy == 0)]};
+  }
+  [[nodiscard]] Vec2 exit_upper(std::int32_t cx, std::int32_t cy) const {
+    const double beyond_x[2] = {hysteresis_.x, 0.0};
+    const double beyond_y[2] = {hysteresis_.y, 0.0};
+    return cell_lower(cx + 1, cy + 1) +
+           Vec2{beyond_x[periodic_ & (cx + 1 == nx_)], beyond_y[periodic_ & (cy + 1 == ny_)]};
+  }
 
   // Renumbers the balls as the world re-orders them: ball i becomes ball new_index[i], in the
   // same cell; each cell's list is rebuilt in ascending order.

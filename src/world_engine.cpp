@@ -343,17 +343,9 @@ void World::Impl::predict(std::uint32_t ball) {
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
   const bool wraps = def.boundary != Boundary::box;
-  // The sides a ball leaves through are the grid's hysteresis beyond its cell's, but for the
-  // periodic cell's own sides, where it re-enters at the opposite side: positions stay in the
-  // cell as the API promises.
-  const bool edges = def.boundary == Boundary::periodic;
-  const double beyond_x[2] = {grid.hysteresis().x, 0.0};  // [1]: a side of the periodic cell
-  const double beyond_y[2] = {grid.hysteresis().y, 0.0};
-  const Vec2 low =
-      grid.cell_lower(cx, cy) - Vec2{beyond_x[edges & (cx == 0)], beyond_y[edges & (cy == 0)]};
-  const Vec2 high =
-      grid.cell_lower(cx + 1, cy + 1) +  // the upper-right corner
-      Vec2{beyond_x[edges & (cx + 1 == grid.nx())], beyond_y[edges & (cy + 1 == grid.ny())]};
+  // (The sides it leaves through lie the grid's hysteresis beyond the cell's.)
+  const Vec2 low = grid.exit_lower(cx, cy);
+  const Vec2 high = grid.exit_upper(cx, cy);
   // (& and | on the conditions, both exits computed and the choices made by indexing pairs of
   // values: GCC turns a ?: between doubles into a branch. An exit not taken may divide by zero,
   // harmlessly.)

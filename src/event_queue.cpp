@@ -45,6 +45,8 @@ void EventQueue::clear_places(std::uint32_t count) {
   link_next_.assign(count, kNoEvent);
   link_prev_.assign(count, kNoEvent);
   heap_.clear();
+  deferred_count_ = 0;
+  ripe_ = 0;
   std::fill(buckets_.begin(), buckets_.end(), kNoEvent);
   overflow_ = kNoEvent;
   outside_heap_ = 0;

@@ -36,25 +36,40 @@ class EventQueue {
   // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();
-  // The balls of the events likeliest to come up after the top one, for prefetching their data
-  // while the top one is processed: the top's two children in the heap, with the partners of
-  // those that are pair contacts, and the owners of the first two events of the next bucket.
-  // Writes up to six, returns how many.
-  int likely_next(std::uint32_t out[6]) const {
-    int count = 0;
-    for (std::size_t k = 1; k <= 2 && k < heap_.size(); ++k) {
-      out[count++] = heap_[k].owner();
-      if (heap_[k].kind() == EventKind::ball_ball) out[count++] = heap_[k].partner;
-    }
-    if (year_open_ && current_ + 1 < year_end_) {
-      const auto next = static_cast<std::size_t>(current_ + 1) & (buckets_.size() - 1);
-      std::uint32_t owner = buckets_[next];
-      for (int k = 0; k < 2 && owner != kNoEvent; ++k) {
-        out[count++] = owner;
-        owner = link_next_[owner];
-      }
-    }
-    return count;
+  // Whether set() defers filing an event that falls in a later bucket until the next top(),
+  // asking the cache for its bucket's list head now and, at that top(), for the link filing it
+  // writes: large worlds' events are filed across the queue's whole year, a miss or two each,
+  // which then overlap the engine's work (docs/world.md, "One event per ball"). Events at the
+  // current bucket are filed at once, and top() files every deferred one before it opens a
+  // bucket, so the order of events is the same either way.
+  void defer_filing(bool on) noexcept {
+    flush_deferred();
+    defer_ = on;
+  }
+
+  // For the engine's lookahead (world_lookahead.cpp), which walks the buckets ahead of the
+  // current one: the current bucket's number (it grows while a year lasts; -1 while no year is
+  // open), the first event's owner in bucket `bucket` (kNone past the year), the owner after
+  // `owner` in its bucket's list (kNone at its end), and a pending event's kind and partner.
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  [[nodiscard]] std::int64_t current_bucket() const { return year_open_ ? current_ : -1; }
+  [[nodiscard]] std::uint32_t bucket_first(std::int64_t bucket) const {
+    if (!year_open_ || bucket >= year_end_) return kNone;
+    return buckets_[static_cast<std::size_t>(bucket) & (buckets_.size() - 1)];
+  }
+  [[nodiscard]] std::uint32_t list_next(std::uint32_t owner) const { return link_next_[owner]; }
+  [[nodiscard]] EventKind kind_of(std::uint32_t owner) const { return events_[owner].kind(); }
+  [[nodiscard]] std::uint32_t partner_of(std::uint32_t owner) const {
+    return events_[owner].partner();
+  }
+  // Asks the cache, for writing, for the links that taking the ball's event out of its bucket's
+  // list writes (its neighbours' in the list).
+  [[gnu::always_inline]] void prefetch_list_neighbours(std::uint32_t owner) const {
+    if (places_[owner] != Place::bucket) return;
+    const std::uint32_t before_it = link_prev_[owner];
+    const std::uint32_t after_it = link_next_[owner];
+    __builtin_prefetch(&link_next_[before_it != kNoEvent ? before_it : owner], 1);
+    __builtin_prefetch(&link_prev_[after_it != kNoEvent ? after_it : owner], 1);
   }
   // Asks the cache for what replacing the ball's slot reads (inlined by force, as
   // Grid::prefetch_for is, for the same reason).
@@ -96,7 +111,7 @@ class EventQueue {
     [[nodiscard]] std::uint32_t owner() const { return owner_and_kind & (kMaxBalls - 1); }
     [[nodiscard]] EventKind kind() const { return static_cast<EventKind>(owner_and_kind >> 30); }
   };
-  enum class Place : std::uint8_t { none, heap, bucket, overflow };
+  enum class Place : std::uint8_t { none, heap, bucket, overflow, deferred };
 
   [[nodiscard]] Event unpack(std::uint32_t owner) const;
   [[nodiscard]] Entry entry_of(std::uint32_t owner) const {
@@ -113,7 +128,7 @@ class EventQueue {
 
   void insert(std::uint32_t owner);
   void remove(std::uint32_t owner);
-  void list_push(std::uint32_t& head, std::uint32_t owner, Place place);
+  void list_push(std::uint32_t& head, std::uint32_t owner, Place place) noexcept;
   void list_remove(std::uint32_t& head, std::uint32_t owner);
   void heap_push(std::uint32_t owner);
   void heap_remove(std::uint32_t owner);
@@ -123,6 +138,12 @@ class EventQueue {
     heap_[position] = entry;
     link_next_[entry.owner()] = position;  // a heap member's "next" is its heap position
   }
+  // Files every deferred event (defer_filing).
+  void flush_deferred() noexcept;
+  // Files the deferred events whose list links were asked for at the last top(), and asks for
+  // those of the rest.
+  void age_deferred() noexcept;
+  void file_deferred(std::uint32_t owner) noexcept;
   // Starts a new year from the overflow list; false when no finite event is left.
   bool open_year();
   // Empties the heap, the buckets and the lists, keeping events_.
@@ -145,6 +166,13 @@ class EventQueue {
   std::int64_t year_end_ = 0;  // the first bucket past the year
   double origin_ = 0.0;        // the time where bucket 0 starts
   double inverse_width_ = 0.0;
+  // Events whose filing is deferred (Place::deferred): a contact's two re-predictions, or a
+  // few more; a set() that finds the list full files them all first.
+  static constexpr std::uint32_t kMostDeferred = 8;
+  std::uint32_t deferred_[kMostDeferred] = {};
+  std::uint32_t deferred_count_ = 0;
+  std::uint32_t ripe_ = 0;  // the first ripe_ of them were deferred before the last top()
+  bool defer_ = false;
   std::vector<double> scratch_;  // open_year's sample of times (kept: at most a few thousand)
   const std::uint32_t* handles_ = nullptr;
 };

@@ -4,6 +4,7 @@
 // event_queue.hpp only.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace carom::detail {
@@ -34,7 +35,51 @@ inline void EventQueue::set(std::uint32_t owner, const Event& event) {
   remove(owner);
   events_[owner] = {event.time, event.partner | (static_cast<std::uint32_t>(event.kind) << 30),
                     event.partner_version};
+  if (defer_ && year_open_) {
+    const std::int64_t bucket = bucket_of(event.time);
+    if (bucket > current_ && bucket < year_end_) {
+      __builtin_prefetch(&buckets_[static_cast<std::size_t>(bucket) & (buckets_.size() - 1)]);
+      if (deferred_count_ == kMostDeferred) flush_deferred();
+      deferred_[deferred_count_++] = owner;
+      places_[owner] = Place::deferred;
+      return;
+    }
+  }
   insert(owner);
+}
+
+// A deferred event falls in a bucket after the current one: set() defers no other, and the
+// current bucket moves only in top(), which files every deferred event first (a new year, or a
+// reset, likewise). So it goes to a bucket's list, never to the heap, and filing it allocates
+// nothing.
+inline void EventQueue::file_deferred(std::uint32_t owner) noexcept {
+  const auto index =
+      static_cast<std::size_t>(bucket_of(events_[owner].time)) & (buckets_.size() - 1);
+  places_[owner] = Place::none;
+  list_push(buckets_[index], owner, Place::bucket);
+}
+
+inline void EventQueue::flush_deferred() noexcept {
+  for (std::uint32_t k = 0; k < deferred_count_; ++k) file_deferred(deferred_[k]);
+  deferred_count_ = 0;
+  ripe_ = 0;
+}
+
+inline void EventQueue::age_deferred() noexcept {
+  // (A removal may have moved a later one among the first ripe_: it is filed a little early.)
+  const std::uint32_t ripe = std::min(ripe_, deferred_count_);
+  for (std::uint32_t k = 0; k < ripe; ++k) file_deferred(deferred_[k]);
+  for (std::uint32_t k = ripe; k < deferred_count_; ++k) {
+    const std::uint32_t owner = deferred_[k];
+    deferred_[k - ripe] = owner;
+    // Filing writes the present list head's back link (list_push).
+    const auto index =
+        static_cast<std::size_t>(bucket_of(events_[owner].time)) & (buckets_.size() - 1);
+    const std::uint32_t head = buckets_[index];
+    __builtin_prefetch(&link_prev_[head != kNoEvent ? head : owner], 1);
+  }
+  deferred_count_ -= ripe;
+  ripe_ = deferred_count_;
 }
 
 inline void EventQueue::insert(std::uint32_t owner) {
@@ -72,13 +117,21 @@ inline void EventQueue::remove(std::uint32_t owner) {
     case Place::overflow:
       list_remove(overflow_, owner);
       return;
+    case Place::deferred:
+      for (std::uint32_t k = 0; k < deferred_count_; ++k) {
+        if (deferred_[k] != owner) continue;
+        deferred_[k] = deferred_[--deferred_count_];
+        places_[owner] = Place::none;
+        return;
+      }
+      return;
   }
 }
 
 // The links are written through selected addresses rather than under branches: whether a list
 // is empty, or a ball last in it, is random, and such branches mispredicted often (a write whose
 // target does not matter goes to the moving ball's own link, which is set right after).
-inline void EventQueue::list_push(std::uint32_t& head, std::uint32_t owner, Place place) {
+inline void EventQueue::list_push(std::uint32_t& head, std::uint32_t owner, Place place) noexcept {
   link_prev_[head != kNoEvent ? head : owner] = owner;
   link_prev_[owner] = kNoEvent;
   link_next_[owner] = head;
@@ -99,6 +152,12 @@ inline void EventQueue::list_remove(std::uint32_t& head, std::uint32_t owner) {
 }
 
 inline Event EventQueue::top() {
+  // Every deferred event is filed before a bucket is opened (they all fall in later ones).
+  if (heap_.empty()) {
+    flush_deferred();
+  } else {
+    age_deferred();
+  }
   while (heap_.empty()) {
     if (!year_open_ || current_ + 1 >= year_end_) {
       if (!open_year()) return Event{};  // nothing finite left

@@ -100,6 +100,19 @@ class Grid {
     __builtin_prefetch(&next_[ball]);
   }
 
+  // For the engine's lookahead (world_lookahead.cpp): asks the cache for the list heads of the
+  // 3×3 block around the interior cell (cx, cy), three rows of three, and for a ball's list link.
+  [[gnu::always_inline]] void prefetch_block_heads(std::int32_t cx, std::int32_t cy) const {
+    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
+      const std::int32_t* first = &head_[static_cast<std::size_t>(index(cx - 1, row))];
+      __builtin_prefetch(first);
+      __builtin_prefetch(first + 2);  // (a row's 12 bytes may straddle two lines)
+    }
+  }
+  [[gnu::always_inline]] void prefetch_link(std::uint32_t ball) const {
+    __builtin_prefetch(&next_[ball]);
+  }
+
   // The cells a wall with this bounding box is listed in: columns x0..x1, rows y0..y1.
   struct CellSpan {
     std::int32_t x0, x1, y0, y1;

@@ -15,6 +15,7 @@
 #include "event_queue.hpp"
 #include "grid.hpp"
 #include "huge_page_allocator.hpp"
+#include "lookahead.hpp"
 #include "save_format.hpp"
 #include "species.hpp"
 #include "wall.hpp"
@@ -91,6 +92,7 @@ struct World::Impl {
 
   detail::Grid grid;
   detail::EventQueue queue;
+  detail::Lookahead lookahead;  // large worlds' prefetching of the events ahead
 
   double time = 0.0;
   std::uint64_t collisions = 0;
@@ -221,8 +223,15 @@ struct World::Impl {
   bool process(const detail::Event& event);  // true when a contact was resolved
   // Whether a contact's balls have moved measurably in `elapsed` (run's jam detection).
   [[nodiscard]] bool moved_measurably(const detail::Event& contact, double elapsed) const;
-  // Asks the cache for the data of the events likeliest to follow the queue's top one.
-  void prefetch_likely_next() const;
+  // Large worlds: asks the cache, stage by stage, for the data of the events in the buckets
+  // ahead of the queue's current one (world_lookahead.cpp); called when that bucket changes.
+  // Only prefetches: changes no result.
+  void look_ahead();
+  void lookahead_noted();
+  void lookahead_walk(std::int64_t current);
+  void lookahead_stage_0(std::uint32_t ball) const;
+  void lookahead_stage_1(std::uint32_t ball);
+  void lookahead_block(std::int32_t cx, std::int32_t cy);
   // Whether the rounding of the world's time moves one of an event's balls measurably.
   [[nodiscard]] bool time_too_coarse(const detail::Event& event) const;
   // Refuses a run whose time is too large for its balls' motion ("has stalled").

@@ -1,0 +1,46 @@
+// carom internal: what the engine's lookahead (world_lookahead.cpp) carries from one pass to the
+// next. Each pass asks the cache for one more level of the data the events ahead will read:
+// what it learnt from lines that the pass before asked for is kept here, so that no pass waits
+// for memory. Design: docs/world.md, "Memory order".
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace carom::detail {
+
+// A short list of fixed capacity whose pushes past it overwrite the last item: the lookahead
+// only prefetches, so dropping a few under a burst costs a few misses, never a result.
+template <typename T, std::uint32_t kCapacity>
+struct DropList {
+  std::array<T, kCapacity> items{};
+  std::uint32_t count = 0;
+
+  // Pushes `value` when `keep` (written either way, so that callers need not branch on it).
+  void push_if(T value, bool keep) {
+    items[count] = value;
+    count += static_cast<std::uint32_t>(keep & (count + 1 < kCapacity));
+  }
+  void clear() { count = 0; }
+  [[nodiscard]] const T* begin() const { return items.data(); }
+  [[nodiscard]] const T* end() const { return items.data() + count; }
+};
+
+struct Lookahead {
+  // The queue bucket the last pass was made for (passes are made as the queue's current bucket
+  // advances; -1: none yet).
+  std::int64_t passed_bucket = -1;
+  // By pass parity: what the pass of that parity found, for the next pass to use.
+  // The cells whose 3×3 blocks' list heads were asked for ...
+  DropList<std::int32_t, 32> cells[2];
+  // ... the balls of pair contacts ahead whose event-list links were asked for ...
+  DropList<std::uint32_t, 32> partners[2];
+  // ... and the first balls of the blocks before, whose records and list links were asked for.
+  DropList<std::uint32_t, 9 * 32> first_balls[2];
+  int parity = 0;
+  // Whether passes also ask for the second balls of the cells and the pair partners' blocks:
+  // worth its instructions only in worlds far larger than the last-level cache.
+  bool deep = false;
+};
+
+}  // namespace carom::detail

@@ -39,7 +39,7 @@ class EventQueue {
   // Whether set() defers filing an event that falls in a later bucket until the next top(),
   // asking the cache for its bucket's list head now and, at that top(), for the link filing it
   // writes: large worlds' events are filed across the queue's whole year, a miss or two each,
-  // which then overlap the engine's work (docs/world.md, "One event per ball"). Events at the
+  // which then overlap the engine's work (docs/world.md, "Looking ahead"). Events at the
   // current bucket are filed at once, and top() files every deferred one before it opens a
   // bucket, so the order of events is the same either way.
   void defer_filing(bool on) noexcept {

@@ -1,7 +1,8 @@
-// carom internal: what the engine's lookahead (world_lookahead.cpp) carries from one pass to the
-// next. Each pass asks the cache for one more level of the data the events ahead will read:
-// what it learnt from lines that the pass before asked for is kept here, so that no pass waits
-// for memory. Design: docs/world.md, "Memory order".
+// carom internal: what the engine's lookahead (world_lookahead.cpp) carries from one call to
+// the next (a call each time the queue's current bucket advances). Each call asks the cache for
+// one more level of the data the events ahead will read: what it learns from lines that the
+// call before asked for is kept here, so that no call waits for memory. Design: docs/world.md,
+// "Looking ahead".
 #pragma once
 
 #include <array>
@@ -27,19 +28,18 @@ struct DropList {
 };
 
 struct Lookahead {
-  // The queue bucket the last pass was made for (passes are made as the queue's current bucket
-  // advances; -1: none yet).
+  // The queue's current bucket at the last call (-1: none yet).
   std::int64_t passed_bucket = -1;
-  // By pass parity: what the pass of that parity found, for the next pass to use.
-  // The cells whose 3×3 blocks' list heads were asked for ...
+  // By the parity of the call that found them, for the next call to use: the cells whose 3×3
+  // blocks' list heads were asked for ...
   DropList<std::int32_t, 32> cells[2];
   // ... the balls of pair contacts ahead whose event-list links were asked for ...
   DropList<std::uint32_t, 32> partners[2];
   // ... and the first balls of the blocks before, whose records and list links were asked for.
   DropList<std::uint32_t, 9 * 32> first_balls[2];
   int parity = 0;
-  // Whether passes also ask for the second balls of the cells and the pair partners' blocks:
-  // worth its instructions only in worlds far larger than the last-level cache.
+  // Whether calls also ask for the cells' second balls and the pair partners' blocks: worth
+  // their instructions only in worlds far larger than the last-level cache.
   bool deep = false;
 };
 

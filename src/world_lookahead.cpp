@@ -22,7 +22,7 @@ constexpr std::int64_t kReach = 6;
 // After a jump of the current bucket over empty ones, the walk is made for at most this many of
 // the buckets passed (for the rest, stages are skipped: a few misses more). One alone measured
 // 7 % slower at 10⁶.
-constexpr std::int64_t kMostPasses = 3;
+constexpr std::int64_t kMostWalks = 3;
 
 // Both lines a 48-byte slot may straddle. (Inlined by force, as Grid::prefetch_for is: GCC
 // drops calls to a function whose only effects are prefetches.)
@@ -39,7 +39,7 @@ void World::Impl::look_ahead() {
   lookahead_noted();
   // (A bucket number below the last one passed: a new year, or a new queue.)
   const std::int64_t first =
-      current > passed ? std::max(passed + 1, current - kMostPasses + 1) : current;
+      current > passed ? std::max(passed + 1, current - kMostWalks + 1) : current;
   for (std::int64_t bucket = first; bucket <= current; ++bucket) lookahead_walk(bucket);
   lookahead.passed_bucket = current;
   lookahead.parity ^= 1;

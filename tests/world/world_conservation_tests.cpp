@@ -95,23 +95,23 @@ TEST(WorldConservation, ElasticPeriodicGasKeepsEnergyAndMomentumLong) {
   expect_elastic_periodic_gas_conserves(10'000'000, 1'000'000);
 }
 
-// Worlds of 2¹⁵ balls and more prefetch the events ahead and defer filing new events in the
+// Worlds of 2¹⁶ balls and more prefetch the events ahead and defer filing new events in the
 // queue (world_lookahead.cpp, event_queue.hpp); neither may change a result. Such a gas, run in
 // chunks (each run starts and ends the deferral and the lookahead afresh) and in one run, must
 // end in the same state bit for bit, keep its energy and momentum, and pass the audit, in a
 // periodic world and in a box (whose grid has edge cells the lookahead leaves out).
 TEST(WorldConservation, LargeWorldsThatPrefetchAheadKeepEveryGuarantee) {
-  constexpr int kPerRow = 182;  // 33 124 balls, just above the 2¹⁵ from which worlds prefetch
+  constexpr int kPerRow = 257;  // 66 049 balls, just above the 2¹⁶ from which worlds prefetch
   constexpr std::uint64_t kContacts = 60'000;
   for (const Boundary boundary : {Boundary::periodic, Boundary::box}) {
     SCOPED_TRACE(boundary == Boundary::periodic ? "periodic" : "box");
     WorldDef def;
     def.boundary = boundary;
     def.lower = {0.0, 0.0};
-    def.upper = {364.0, 364.0};
+    def.upper = {514.0, 514.0};
     World chunked = gas(def, GasShape{kPerRow}, 63);
     World whole = gas(def, GasShape{kPerRow}, 63);
-    ASSERT_GE(chunked.ball_count(), std::size_t{1} << 15);
+    ASSERT_GE(chunked.ball_count(), std::size_t{1} << 16);
     const double energy = whole.kinetic_energy();
     const Vec2 momentum = whole.momentum();
     const double scale = momentum_scale(whole);

@@ -28,7 +28,7 @@ struct DropList {
 };
 
 struct Lookahead {
-  // The queue's current bucket at the last call (-1: none yet).
+  // The queue's current bucket at the last call (-1: none yet, or the queue was rebuilt since).
   std::int64_t passed_bucket = -1;
   // By the parity of the call that found them, for the next call to use: the cells whose 3×3
   // blocks' list heads were asked for ...
@@ -38,6 +38,10 @@ struct Lookahead {
   // ... and the first balls of the blocks before, whose records and list links were asked for.
   DropList<std::uint32_t, 9 * 32> first_balls[2];
   int parity = 0;
+  // By bucket number modulo kCursors: the ball in that bucket's list whose stage 0 the last walk
+  // made (EventQueue::kNone: the list's end, or nothing yet).
+  static constexpr std::int64_t kCursors = 8;
+  std::array<std::uint32_t, kCursors> cursors{};
   // Whether calls also ask for the cells' second balls and the pair partners' blocks: worth
   // their instructions only in worlds far larger than the last-level cache.
   bool deep = false;

@@ -286,6 +286,7 @@ void World::Impl::sort_by_cell() {
   if (events_valid) {
     queue.use_handles(handle_of.data());
     queue.reorder(new_slot);
+    lookahead.passed_bucket = -1;  // its lists are rebuilt: the lookahead starts again
   }
 }
 
@@ -308,6 +309,7 @@ void World::Impl::predict_all() {
   synchronize(time);  // prediction reads each ball's record as being at the world's time
   queue.reset(static_cast<std::uint32_t>(balls.size()));
   queue.use_handles(handle_of.data());
+  lookahead.passed_bucket = -1;
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive()) predict(i);
   }

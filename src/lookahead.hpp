@@ -39,7 +39,8 @@ struct Lookahead {
   DropList<std::uint32_t, 9 * 32> first_balls[2];
   int parity = 0;
   // By bucket number modulo kCursors: the ball in that bucket's list whose stage 0 the last walk
-  // made (EventQueue::kNone: the list's end, or nothing yet).
+  // made (EventQueue::kNone: the list's end). Read only after a call has set them: passed_bucket
+  // at -1 makes the next call start every bucket in reach afresh.
   static constexpr std::int64_t kCursors = 8;
   std::array<std::uint32_t, kCursors> cursors{};
   // Whether calls also ask for the cells' second balls and the pair partners' blocks: worth

@@ -229,6 +229,7 @@ struct World::Impl {
   void look_ahead();
   void lookahead_noted();
   void lookahead_walk(std::int64_t current);
+  void lookahead_enter(std::int64_t bucket);
   void lookahead_stage_0(std::uint32_t ball) const;
   void lookahead_stage_1(std::uint32_t ball);
   void lookahead_block(std::int32_t cx, std::int32_t cy);

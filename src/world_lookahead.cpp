@@ -45,11 +45,7 @@ void World::Impl::look_ahead() {
   } else {
     // The first call, a new year or queue, a re-ordered queue, or a jump over many empty
     // buckets: every bucket in reach starts again at its first ball.
-    for (std::int64_t d = 1; d <= kReach; ++d) {
-      const std::uint32_t first = queue.bucket_first(current + d);
-      lookahead.cursors[static_cast<std::size_t>(current + d) % kCursors] = first;
-      if (first != detail::EventQueue::kNone) lookahead_stage_0(first);
-    }
+    for (std::int64_t d = 1; d <= kReach; ++d) lookahead_enter(current + d);
   }
   lookahead.passed_bucket = current;
   lookahead.parity ^= 1;
@@ -69,7 +65,8 @@ void World::Impl::look_ahead() {
   // Selections rather than branches: kinds and sides are random.
   const EventKind kind = queue.kind_of(ball);
   const bool pair = kind == EventKind::ball_ball;
-  const std::uint32_t partners[2] = {ball, queue.partner_of(ball)};
+  const std::uint32_t named = queue.partner_of(ball);  // a ball, a wall or a side, by the kind
+  const std::uint32_t partners[2] = {ball, named};
   const std::uint32_t partner = partners[pair];
   prefetch_slot(balls[partner]);
   grid.prefetch_for(partner);
@@ -79,7 +76,7 @@ void World::Impl::look_ahead() {
   if (cell == detail::kNoBall) return;
   static constexpr std::int32_t kStepX[5] = {-1, 1, 0, 0, 0};  // kLeft, kRight, kDown, kUp, none
   static constexpr std::int32_t kStepY[5] = {0, 0, -1, 1, 0};
-  const std::uint32_t sides[2] = {4, queue.partner_of(ball) & 3};
+  const std::uint32_t sides[2] = {4, named & 3};
   const std::uint32_t side = sides[kind == EventKind::cell_crossing];
   lookahead_block(grid.column(cell) + kStepX[side], grid.row(cell) + kStepY[side]);
 }
@@ -148,8 +145,13 @@ void World::Impl::lookahead_walk(std::int64_t current) {
     cursor = queue.list_next(cursor);
     if (cursor != detail::EventQueue::kNone) lookahead_stage_0(cursor);
   }
-  const std::uint32_t first = queue.bucket_first(current + kReach);
-  lookahead.cursors[static_cast<std::size_t>(current + kReach) % kCursors] = first;
+  lookahead_enter(current + kReach);
+}
+
+// A bucket coming into reach: its cursor starts at its first ball, which gets stage 0.
+void World::Impl::lookahead_enter(std::int64_t bucket) {
+  const std::uint32_t first = queue.bucket_first(bucket);
+  lookahead.cursors[static_cast<std::size_t>(bucket) % kCursors] = first;
   if (first != detail::EventQueue::kNone) lookahead_stage_0(first);
 }
 

@@ -2,13 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "permute.hpp"
 
 namespace carom::detail {
 
+namespace {
+
+// One axis's exits (Grid::exit_x): for each of n cells from `lower`, of size `cell`, the side
+// it is left through downward and upward.
+void tabulate_exits(std::vector<double>& exits, double lower, double cell, std::int32_t n,
+                    double hysteresis, bool periodic, bool closed) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  exits.resize(2 * static_cast<std::size_t>(n));
+  for (std::int32_t c = 0; c < n; ++c) {
+    const double down = lower + cell * c;
+    const double up = lower + cell * (c + 1);
+    const bool first = c == 0;
+    const bool last = c + 1 == n;
+    const auto at = 2 * static_cast<std::size_t>(c);
+    exits[at] = closed && first ? -kNever : down - (periodic && first ? 0.0 : hysteresis);
+    exits[at + 1] = closed && last ? kNever : up + (periodic && last ? 0.0 : hysteresis);
+  }
+}
+
+}  // namespace
+
 void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
-                 std::uint32_t ball_capacity, Vec2 hysteresis) {
+                 bool closed, std::uint32_t ball_capacity, Vec2 hysteresis) {
   lower_ = lower;
   cell_ = cell;
   hysteresis_ = hysteresis;
@@ -16,6 +38,8 @@ void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool p
   rows_ = FixedDivisor(static_cast<std::uint32_t>(nx));
   ny_ = ny;
   periodic_ = periodic;
+  tabulate_exits(exits_x_, lower.x, cell.x, nx, hysteresis.x, periodic, closed);
+  tabulate_exits(exits_y_, lower.y, cell.y, ny, hysteresis.y, periodic, closed);
   const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
   head_.assign(cells, kNoBall);
   wall_start_.clear();

@@ -23,7 +23,8 @@ class Grid {
   // leaves its cell only once its centre is `hysteresis` (per axis) beyond the cell's side, so
   // that a ball's centre lies within its cell grown by that much; the cell less twice the
   // hysteresis is what must hold the largest diameter (docs/world.md, "The broad phase").
-  void setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
+  // In a closed grid (a box) the outer sides of the outermost cells are never left.
+  void setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic, bool closed,
              std::uint32_t ball_capacity, Vec2 hysteresis);
   // Makes room for balls up to index capacity − 1 (new ones in no cell).
   void reserve_balls(std::uint32_t capacity);
@@ -64,23 +65,18 @@ class Grid {
   [[nodiscard]] Vec2 cell_lower(std::int32_t cx, std::int32_t cy) const {
     return {lower_.x + cell_.x * cx, lower_.y + cell_.y * cy};
   }
-  // The lower-left and upper-right corners of the box a ball in cell (cx, cy) leaves its cell
-  // through: the cell grown by the hysteresis, but for the periodic cell's own sides, where a
-  // ball re-enters at the opposite side (so that positions stay in the cell). By selection, not
-  // branches: which cell a ball is in is random.
-  [[nodiscard]] Vec2 exit_lower(std::int32_t cx, std::int32_t cy) const {
-    const double beyond_x[2] = {hysteresis_.x, 0.0};  // [1]: a side of the periodic cell
-    const double beyond_y[2] = {hysteresis_.y, 0.0};
-    return cell_lower(cx, cy) -
-           Vec2{beyond_x[periodic_ & (cx == 0)], beyond_y[periodic_ & (cy == 0)]};
+  // Where a ball in column cx leaves its cell moving down the x axis (upward = false) or up it
+  // (true), and likewise in row cy along y: the cell's side, the hysteresis beyond it, but for
+  // the periodic cell's own sides, where a ball re-enters at the opposite side (so that positions
+  // stay in the cell); ±infinity at a closed grid's outer sides, which are never left. Tabled by
+  // column and row (setup), read by the direction's index: which cell a ball is in, and which
+  // way it moves, are random, and a branch on either mispredicts.
+  [[nodiscard]] double exit_x(std::int32_t cx, bool upward) const {
+    return exits_x_[2 * static_cast<std::size_t>(cx) + upward];
   }
-  [[nodiscard]] Vec2 exit_upper(std::int32_t cx, std::int32_t cy) const {
-    const double beyond_x[2] = {hysteresis_.x, 0.0};
-    const double beyond_y[2] = {hysteresis_.y, 0.0};
-    return cell_lower(cx + 1, cy + 1) +
-           Vec2{beyond_x[periodic_ & (cx + 1 == nx_)], beyond_y[periodic_ & (cy + 1 == ny_)]};
+  [[nodiscard]] double exit_y(std::int32_t cy, bool upward) const {
+    return exits_y_[2 * static_cast<std::size_t>(cy) + upward];
   }
-
   // Renumbers the balls as the world re-orders them: ball i becomes ball new_index[i], in the
   // same cell; each cell's list is rebuilt in ascending order.
   void reorder(std::span<const std::uint32_t> new_index);
@@ -174,6 +170,8 @@ class Grid {
   std::int32_t ny_ = 1;
   FixedDivisor rows_{1};  // division by nx_
   bool periodic_ = false;
+  std::vector<double> exits_x_;        // by column: the exits down and up the axis (exit_x)
+  std::vector<double> exits_y_;        // by row
   BigVector<std::int32_t> head_;       // by cell: first ball, or kNoBall
   BigVector<std::int32_t> next_;       // by ball
   BigVector<std::int32_t> ball_cell_;  // by ball, or kNoBall

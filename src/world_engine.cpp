@@ -196,7 +196,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   };
   const Vec2 hysteresis{hysteresis_of(cell_size.x), hysteresis_of(cell_size.y)};
   grid.setup(lower, cell_size, nx, ny, def.boundary == Boundary::periodic,
-             static_cast<std::uint32_t>(balls.size()), hysteresis);
+             def.boundary == Boundary::box, static_cast<std::uint32_t>(balls.size()), hysteresis);
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive()) grid.insert(i, grid.cell_of(position_at(i, time)));
   }
@@ -343,34 +343,29 @@ void World::Impl::predict(std::uint32_t ball) {
   best.owner = ball;
 
   // Leaving the cell, through the side it moves towards on each axis (x first on a tie). In a
-  // box the outermost cells have no outer side to leave through. Written as selections, not
-  // branches: the signs of a ball's velocity are random, and a mispredicted branch costs more
-  // than computing both sides.
+  // box the outermost cells have no outer side to leave through (the grid's exit there is
+  // infinite). Written as selections, not branches: the signs of a ball's velocity are random,
+  // and a mispredicted branch costs more than computing both sides.
   const std::int32_t cell = grid.cell_of_ball(ball);
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
-  const bool wraps = def.boundary != Boundary::box;
-  // (The sides it leaves through lie the grid's hysteresis beyond the cell's.)
-  const Vec2 low = grid.exit_lower(cx, cy);
-  const Vec2 high = grid.exit_upper(cx, cy);
-  // (& and | on the conditions, both exits computed and the choices made by indexing pairs of
-  // values: GCC turns a ?: between doubles into a branch. An exit not taken may divide by zero,
-  // harmlessly.)
-  const bool leaves_x =
-      ((v.x > 0.0) & (wraps | (cx + 1 < grid.nx()))) | ((v.x < 0.0) & (wraps | (cx > 0)));
-  const bool leaves_y =
-      ((v.y > 0.0) & (wraps | (cy + 1 < grid.ny()))) | ((v.y < 0.0) & (wraps | (cy > 0)));
-  const double sides_x[2] = {low.x, high.x};
-  const double sides_y[2] = {low.y, high.y};
-  const double exit_x[2] = {kInfinity, time + std::max(0.0, (sides_x[v.x > 0.0] - p.x) / v.x)};
-  const double exit_y[2] = {kInfinity, time + std::max(0.0, (sides_y[v.y > 0.0] - p.y) / v.y)};
+  const bool up_x = v.x > 0.0;
+  const bool up_y = v.y > 0.0;
+  const double side_at_x = grid.exit_x(cx, up_x);
+  const double side_at_y = grid.exit_y(cy, up_y);
+  // (& and | on the conditions, and the choices made by indexing pairs of values: GCC turns a ?:
+  // between doubles into a branch. An exit not taken may divide by zero, harmlessly.)
+  const bool leaves_x = (up_x | (v.x < 0.0)) & (std::abs(side_at_x) != kInfinity);
+  const bool leaves_y = (up_y | (v.y < 0.0)) & (std::abs(side_at_y) != kInfinity);
+  const double exit_x[2] = {kInfinity, time + std::max(0.0, (side_at_x - p.x) / v.x)};
+  const double exit_y[2] = {kInfinity, time + std::max(0.0, (side_at_y - p.y) / v.y)};
   const double exits[2] = {exit_x[leaves_x], exit_y[leaves_y]};
   const bool through_y = exits[1] < exits[0];
   best.time = exits[through_y];
   best.kind = EventKind::cell_crossing;
   // (A ball that leaves through no side keeps the default partner, 0.)
-  const std::uint32_t side_x = (leaves_x & (v.x > 0.0)) ? detail::kRight : detail::kLeft;
-  const std::uint32_t side_y = v.y > 0.0 ? detail::kUp : detail::kDown;
+  const std::uint32_t side_x = (leaves_x & up_x) ? detail::kRight : detail::kLeft;
+  const std::uint32_t side_y = up_y ? detail::kUp : detail::kDown;
   const std::uint32_t sides[2] = {side_x, side_y};
   best.partner = sides[through_y];
 

@@ -418,7 +418,8 @@ void World::Impl::load_grid(ByteReader& in) {
     in.inconsistent("grid hysteresis", detail::vector_text(hysteresis),
                     "a cell's hysteresis is at least 0 and at most a tenth of the cell");
   }
-  grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, slots, hysteresis);
+  grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, def.boundary == Boundary::box,
+             slots, hysteresis);
   const std::int32_t cells = nx * ny;
   std::vector<std::int32_t> cell_of(slots);
   for (std::uint32_t i = 0; i < slots; ++i) {

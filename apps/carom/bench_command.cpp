@@ -13,6 +13,7 @@
 #include "bench_report.hpp"
 #include "exit_codes.hpp"
 #include "hard_disk_setup.hpp"
+#include "machine_info.hpp"
 #include "option_value.hpp"
 #include "readable_number.hpp"
 #include "usage_error.hpp"
@@ -32,6 +33,8 @@ namespace {
 constexpr std::uint64_t kMaxBalls = 100'000'000;
 // Collision counts are computed as K·N in doubles; beyond 2^53 they would no longer be exact.
 constexpr double kMaxCollisions = 9007199254740992.0;
+// Timed runs (--repeat): enough for any median, few enough to list.
+constexpr std::uint64_t kMaxRepeats = 1000;
 
 // The options as typed; every value is parsed here, as for `carom sweep`.
 struct BenchOptions {
@@ -40,6 +43,7 @@ struct BenchOptions {
   std::string collisions_per_ball = "10";
   std::string equilibrate = "2";
   std::string seed = "1";
+  std::string repeat = "1";
   bool json = false;
 };
 
@@ -47,7 +51,8 @@ struct BenchSettings {
   HardDiskLayout layout;
   std::uint64_t seed = 0;
   std::uint64_t equilibration_collisions = 0;
-  std::uint64_t collisions = 0;
+  std::uint64_t collisions = 0;  // in each timed run
+  std::uint64_t repeats = 1;     // timed runs
 };
 
 // round(per_ball · n) collisions; per_ball must be a finite number >= minimum.
@@ -108,6 +113,16 @@ BenchSettings parse(const BenchOptions& options) {
   settings.equilibration_collisions =
       parse_collisions("--equilibrate", options.equilibrate, n, true);
   settings.seed = parse_whole_number({"--seed", options.seed, "a whole number >= 0"});
+  const OptionValue repeat_value{"--repeat", options.repeat, "a whole number from 1 to 1000"};
+  settings.repeats = parse_whole_number(repeat_value);
+  if (settings.repeats < 1 || settings.repeats > kMaxRepeats) {
+    reject(repeat_value, "at least 1 and at most " + std::to_string(kMaxRepeats) + " timed runs");
+  }
+  const double total =
+      static_cast<double>(settings.collisions) * static_cast<double>(settings.repeats);
+  if (total > kMaxCollisions) {
+    reject(repeat_value, "that makes " + readable(total) + " collisions, more than 2^53");
+  }
   return settings;
 }
 
@@ -134,6 +149,7 @@ int run(const BenchOptions& options) {
   outcome.lattice_rows = settings.layout.rows;
   outcome.build_type = CAROM_CLI_BUILD_TYPE;
   outcome.compiler = CAROM_CLI_COMPILER;
+  outcome.machine = describe_machine();
 
   const std::uint64_t peak_before = peak_resident_bytes();
   auto start = std::chrono::steady_clock::now();
@@ -153,9 +169,15 @@ int run(const BenchOptions& options) {
 
   const double energy_before = world.kinetic_energy();
   const Vec2 momentum_before = world.momentum();
-  start = std::chrono::steady_clock::now();
-  outcome.collisions = world.run_collisions(settings.collisions);
-  outcome.wall_seconds = seconds_since(start);
+  for (std::uint64_t k = 0; k < settings.repeats; ++k) {
+    start = std::chrono::steady_clock::now();
+    const std::uint64_t resolved = world.run_collisions(settings.collisions);
+    const double seconds = seconds_since(start);
+    outcome.collisions += resolved;
+    outcome.wall_seconds += seconds;
+    outcome.repetitions.push_back(seconds);
+    if (resolved != settings.collisions) break;  // (reported below)
+  }
   const double energy_after = world.kinetic_energy();
   const Vec2 momentum_after = world.momentum();
 
@@ -164,9 +186,9 @@ int run(const BenchOptions& options) {
   outcome.momentum_drift =
       length(momentum_after - momentum_before) / std::sqrt(2.0 * total_mass * energy_before);
 
-  if (outcome.collisions != settings.collisions) {
+  if (outcome.collisions != settings.collisions * settings.repeats) {
     std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
-              << settings.collisions << " collisions asked for\n";
+              << settings.collisions * settings.repeats << " collisions asked for\n";
     return kExitFailure;
   }
   if (options.json) {
@@ -189,7 +211,10 @@ Command add_bench_command(CLI::App& app) {
       "from a normal distribution (sd 1, std::mt19937_64 seeded with S) and the total\n"
       "momentum removed. The world first resolves K0*N collisions, not timed (this also\n"
       "absorbs building the grid and the first prediction of every ball), then K*N\n"
-      "collisions timed with std::chrono::steady_clock.\n\n"
+      "collisions timed with std::chrono::steady_clock; with --repeat R, R such timed\n"
+      "runs one after another on the same gas, each one's time reported with their\n"
+      "median and the least (a host shared with other work slows some runs), and the\n"
+      "totals over all R. The machine (processor, cache sizes) is reported too.\n\n"
       "bytes_per_ball: the growth of the process's peak resident set size (getrusage,\n"
       "ru_maxrss) from before the world is created to after equilibration, divided by\n"
       "N; it includes the transient copies of growing arrays, and it is meaningful only\n"
@@ -200,7 +225,8 @@ Command add_bench_command(CLI::App& app) {
       "|P_after - P_before| / sqrt(2*M*E_before), M the total mass.\n\n"
       "Examples:\n"
       "  carom bench --n 10000 --eta 0.3 --collisions-per-ball 10\n"
-      "  carom bench --n 100000 --eta 0.6 --collisions-per-ball 5 --seed 7 --json");
+      "  carom bench --n 100000 --eta 0.6 --collisions-per-ball 5 --seed 7 --json\n"
+      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5");
 
   auto options = std::make_shared<BenchOptions>();
   bench->add_option("--n", options->n, "Number of disks, at least 2")
@@ -221,6 +247,11 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   bench->add_option("--seed", options->seed, "Seed of the velocities' generator")
       ->type_name("S")
+      ->capture_default_str();
+  bench
+      ->add_option("--repeat", options->repeat,
+                   "Timed runs of K*N collisions each, one after another, >= 1")
+      ->type_name("R")
       ->capture_default_str();
   bench->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
 

@@ -2,9 +2,47 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "readable_number.hpp"
 
 namespace carom::cli {
+
+namespace {
+
+// A byte count as people write cache sizes: KiB, MiB or GiB where it divides evenly.
+std::string cache_text(std::uint64_t bytes) {
+  if (bytes == 0) return "unknown";
+  constexpr std::uint64_t kKiB = 1024;
+  if (bytes % (kKiB * kKiB) == 0) return fmt::format("{} MiB", bytes / (kKiB * kKiB));
+  if (bytes % kKiB == 0) return fmt::format("{} KiB", bytes / kKiB);
+  return fmt::format("{} B", bytes);
+}
+
+}  // namespace
+
+std::vector<double> BenchOutcome::repetition_nanoseconds_per_collision() const {
+  std::vector<double> out;
+  if (repetitions.empty()) return out;
+  const double each = static_cast<double>(collisions) / static_cast<double>(repetitions.size());
+  out.reserve(repetitions.size());
+  for (const double seconds : repetitions) out.push_back(seconds * 1e9 / each);
+  return out;
+}
+
+double BenchOutcome::median_nanoseconds_per_collision() const {
+  std::vector<double> sorted = repetition_nanoseconds_per_collision();
+  if (sorted.empty()) return nanoseconds_per_collision();
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t middle = sorted.size() / 2;
+  return sorted.size() % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+}
+
+double BenchOutcome::best_nanoseconds_per_collision() const {
+  const std::vector<double> each = repetition_nanoseconds_per_collision();
+  if (each.empty()) return nanoseconds_per_collision();
+  return *std::min_element(each.begin(), each.end());
+}
 
 std::string bench_text(const BenchOutcome& o) {
   std::string out;
@@ -18,13 +56,26 @@ std::string bench_text(const BenchOutcome& o) {
   out += fmt::format("  timed: {} collisions in {} s = {} collisions/s ({} ns per collision)\n",
                      o.collisions, readable(o.wall_seconds), readable(o.collisions_per_second()),
                      readable(o.nanoseconds_per_collision()));
+  if (o.repetitions.size() > 1) {
+    std::string each;
+    for (const double ns : o.repetition_nanoseconds_per_collision()) {
+      each += (each.empty() ? "" : ", ") + readable(ns);
+    }
+    out += fmt::format("  {} timed runs, ns per collision: {} (median {}, least {})\n",
+                       o.repetitions.size(), each, readable(o.median_nanoseconds_per_collision()),
+                       readable(o.best_nanoseconds_per_collision()));
+  }
   out +=
       fmt::format("  memory: {} bytes per ball (peak resident set growth, contact recording off)\n",
                   readable(o.bytes_per_ball()));
-  out += fmt::format("  drift over the timed run: energy {}, momentum {} (relative)\n",
-                     readable(o.energy_drift), readable(o.momentum_drift));
+  out += fmt::format("  drift over the timed run{}: energy {}, momentum {} (relative)\n",
+                     o.repetitions.size() > 1 ? "s" : "", readable(o.energy_drift),
+                     readable(o.momentum_drift));
   out += fmt::format("  build: {}, {}\n", o.build_type.empty() ? "(no build type)" : o.build_type,
                      o.compiler);
+  out += fmt::format("  machine: {}, {} logical CPUs; caches L1d {}, L2 {}, L3 {}\n", o.machine.cpu,
+                     o.machine.logical_cpus, cache_text(o.machine.l1d_cache_bytes),
+                     cache_text(o.machine.l2_cache_bytes), cache_text(o.machine.l3_cache_bytes));
   return out;
 }
 
@@ -43,12 +94,21 @@ nlohmann::ordered_json bench_json(const BenchOutcome& o) {
   out["wall_seconds"] = o.wall_seconds;
   out["collisions_per_second"] = o.collisions_per_second();
   out["nanoseconds_per_collision"] = o.nanoseconds_per_collision();
+  out["repetitions"] = o.repetitions.size();
+  out["repetition_nanoseconds_per_collision"] = o.repetition_nanoseconds_per_collision();
+  out["median_nanoseconds_per_collision"] = o.median_nanoseconds_per_collision();
+  out["best_nanoseconds_per_collision"] = o.best_nanoseconds_per_collision();
   out["bytes_per_ball"] = o.bytes_per_ball();
   out["peak_rss_growth_bytes"] = o.peak_rss_growth_bytes;
   out["energy_drift"] = o.energy_drift;
   out["momentum_drift"] = o.momentum_drift;
   out["build_type"] = o.build_type;
   out["compiler"] = o.compiler;
+  out["machine"] = {{"cpu", o.machine.cpu},
+                    {"logical_cpus", o.machine.logical_cpus},
+                    {"l1d_cache_bytes", o.machine.l1d_cache_bytes},
+                    {"l2_cache_bytes", o.machine.l2_cache_bytes},
+                    {"l3_cache_bytes", o.machine.l3_cache_bytes}};
   return out;
 }
 

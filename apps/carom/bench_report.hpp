@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include "machine_info.hpp"
 
 namespace carom::cli {
 
@@ -17,8 +20,11 @@ struct BenchOutcome {
   double setup_seconds = 0.0;  // creating the world and adding every disk
   std::uint64_t equilibration_collisions = 0;
   double equilibration_seconds = 0.0;
-  std::uint64_t collisions = 0;  // resolved in the timed run
-  double wall_seconds = 0.0;     // of the timed run (std::chrono::steady_clock)
+  std::uint64_t collisions = 0;  // resolved in the timed runs, all together
+  double wall_seconds = 0.0;     // of the timed runs, all together (std::chrono::steady_clock)
+  // The timed runs one by one (--repeat), one after another on the same gas, each of
+  // `collisions / repetitions.size()` collisions: each one's seconds.
+  std::vector<double> repetitions;
   // Growth of the process's peak resident set (getrusage's ru_maxrss) from before the world was
   // created to after equilibration.
   std::uint64_t peak_rss_growth_bytes = 0;
@@ -26,6 +32,7 @@ struct BenchOutcome {
   double momentum_drift = 0.0;  // |P_after − P_before| / √(2·M·E_before), M the total mass
   std::string build_type;       // of this binary: the figures mean little below Release
   std::string compiler;
+  MachineInfo machine;
 
   [[nodiscard]] double collisions_per_second() const {
     return static_cast<double>(collisions) / wall_seconds;
@@ -33,6 +40,13 @@ struct BenchOutcome {
   [[nodiscard]] double nanoseconds_per_collision() const {
     return wall_seconds * 1e9 / static_cast<double>(collisions);
   }
+  // Of each timed run, in the order they ran.
+  [[nodiscard]] std::vector<double> repetition_nanoseconds_per_collision() const;
+  // The middle one of those (the mean of the middle two for an even count), and the least: on a
+  // host shared with other work, the median is the figure to compare, the least the one the
+  // others slowed least.
+  [[nodiscard]] double median_nanoseconds_per_collision() const;
+  [[nodiscard]] double best_nanoseconds_per_collision() const;
   [[nodiscard]] double bytes_per_ball() const {
     return static_cast<double>(peak_rss_growth_bytes) / static_cast<double>(n);
   }

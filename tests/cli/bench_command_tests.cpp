@@ -17,6 +17,7 @@ namespace {
 
 using nlohmann::json;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 // Small enough to take milliseconds.
 const std::vector<std::string> kSmallRun{
@@ -32,11 +33,30 @@ json run_json(const std::vector<std::string>& args) {
 TEST(BenchJson, IsOneObjectWithEveryFigure) {
   const json out = run_json(kSmallRun);
   ASSERT_TRUE(out.is_object());
-  for (const char* key :
-       {"n", "eta", "seed", "box_side", "lattice_columns", "lattice_rows", "setup_seconds",
-        "equilibration_collisions", "equilibration_seconds", "collisions", "wall_seconds",
-        "collisions_per_second", "nanoseconds_per_collision", "bytes_per_ball",
-        "peak_rss_growth_bytes", "energy_drift", "momentum_drift", "build_type", "compiler"}) {
+  for (const char* key : {"n",
+                          "eta",
+                          "seed",
+                          "box_side",
+                          "lattice_columns",
+                          "lattice_rows",
+                          "setup_seconds",
+                          "equilibration_collisions",
+                          "equilibration_seconds",
+                          "collisions",
+                          "wall_seconds",
+                          "collisions_per_second",
+                          "nanoseconds_per_collision",
+                          "bytes_per_ball",
+                          "peak_rss_growth_bytes",
+                          "energy_drift",
+                          "momentum_drift",
+                          "build_type",
+                          "compiler",
+                          "repetitions",
+                          "repetition_nanoseconds_per_collision",
+                          "median_nanoseconds_per_collision",
+                          "best_nanoseconds_per_collision",
+                          "machine"}) {
     EXPECT_TRUE(out.contains(key)) << key;
   }
 }
@@ -96,6 +116,53 @@ TEST(BenchJson, SameSeedSameRun) {
             std::bit_cast<std::uint64_t>(other["energy_drift"].get<double>()));
 }
 
+// --repeat R: R timed runs of K·N collisions on the same gas, each one's rate listed, with their
+// median and least; the totals are over all of them.
+TEST(BenchJson, RepeatedRunsAreEachReportedWithTheirMedianAndLeast) {
+  std::vector<std::string> args = kSmallRun;
+  args.insert(args.end(), {"--repeat", "3"});
+  const json out = run_json(args);
+  EXPECT_EQ(out["collisions"], 3000);
+  EXPECT_EQ(out["repetitions"], 3);
+  const std::vector<double> each = out["repetition_nanoseconds_per_collision"];
+  ASSERT_EQ(each.size(), 3u);
+  for (const double ns : each) EXPECT_GT(ns, 0.0);
+  std::vector<double> sorted = each;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(out["median_nanoseconds_per_collision"].get<double>(), sorted[1]);
+  EXPECT_EQ(out["best_nanoseconds_per_collision"].get<double>(), sorted[0]);
+  // The totals are over the three runs.
+  EXPECT_NEAR(out["nanoseconds_per_collision"].get<double>(),
+              out["wall_seconds"].get<double>() * 1e9 / 3000.0, 1e-9);
+}
+
+// The runs continue one gas: three runs of K·N collisions end in the very state one run of 3·K·N
+// does (World's chunked runs are bit-identical to whole ones), so the drift over them is too.
+TEST(BenchJson, RepeatedRunsContinueTheSameGas) {
+  const json repeated =
+      run_json({"bench", "--n", "100", "--collisions-per-ball", "4", "--repeat", "3", "--json"});
+  const json whole = run_json({"bench", "--n", "100", "--collisions-per-ball", "12", "--json"});
+  EXPECT_EQ(repeated["collisions"], whole["collisions"]);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(repeated["energy_drift"].get<double>()),
+            std::bit_cast<std::uint64_t>(whole["energy_drift"].get<double>()));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(repeated["momentum_drift"].get<double>()),
+            std::bit_cast<std::uint64_t>(whole["momentum_drift"].get<double>()));
+  EXPECT_EQ(whole["repetitions"], 1);
+}
+
+// The host is part of every figure: the processor's name and the caches' sizes, as the system
+// reports them (0 where it does not).
+TEST(BenchJson, NamesTheMachine) {
+  const json machine = run_json(kSmallRun)["machine"];
+  ASSERT_TRUE(machine.is_object());
+  EXPECT_TRUE(machine["cpu"].is_string());
+  EXPECT_FALSE(machine["cpu"].get<std::string>().empty());
+  EXPECT_GE(machine["logical_cpus"].get<int>(), 1);
+  for (const char* key : {"l1d_cache_bytes", "l2_cache_bytes", "l3_cache_bytes"}) {
+    EXPECT_TRUE(machine[key].is_number_unsigned()) << key;
+  }
+}
+
 TEST(BenchJson, DenseGasRuns) {
   const json out =
       run_json({"bench", "--n", "400", "--eta", "0.7", "--collisions-per-ball", "5", "--json"});
@@ -112,13 +179,25 @@ TEST(BenchText, SaysTheRateTheMemoryAndTheDrift) {
   EXPECT_THAT(run.out, HasSubstr("collisions/s"));
   EXPECT_THAT(run.out, HasSubstr("bytes per ball"));
   EXPECT_THAT(run.out, HasSubstr("energy"));
+  EXPECT_THAT(run.out, HasSubstr("machine: "));
+  EXPECT_THAT(run.out, Not(HasSubstr("timed runs")));
+}
+
+TEST(BenchText, ListsRepeatedRuns) {
+  const ToolRun run =
+      run_carom({"bench", "--n", "100", "--collisions-per-ball", "3", "--repeat", "4"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("timed: 1200 collisions"));
+  EXPECT_THAT(run.out, HasSubstr("4 timed runs, ns per collision: "));
+  EXPECT_THAT(run.out, HasSubstr("median"));
+  EXPECT_THAT(run.out, HasSubstr("drift over the timed runs"));
 }
 
 TEST(BenchHelp, NamesEveryOptionAndHowMemoryIsMeasured) {
   const ToolRun run = run_carom({"bench", "--help"});
   EXPECT_EQ(run.exit_code, 0);
   for (const char* option :
-       {"--n", "--eta", "--collisions-per-ball", "--equilibrate", "--seed", "--json"}) {
+       {"--n", "--eta", "--collisions-per-ball", "--equilibrate", "--seed", "--repeat", "--json"}) {
     EXPECT_THAT(run.out, HasSubstr(option)) << option;
   }
   EXPECT_THAT(run.out, HasSubstr("ru_maxrss"));
@@ -188,6 +267,13 @@ INSTANTIATE_TEST_SUITE_P(
             "NegativeEquilibration", {"--equilibrate", "-1"}, {"--equilibrate", "\"-1\"", ">= 0"}},
         BadBench{"NegativeSeed", {"--seed", "-1"}, {"--seed", "\"-1\""}},
         BadBench{"WordSeed", {"--seed", "x"}, {"--seed", "\"x\""}},
+        BadBench{"NoRepeats", {"--repeat", "0"}, {"--repeat", "\"0\"", "at least 1"}},
+        BadBench{"TooManyRepeats", {"--repeat", "1001"}, {"--repeat", "\"1001\"", "at most 1000"}},
+        BadBench{"NegativeRepeats", {"--repeat", "-2"}, {"--repeat", "\"-2\""}},
+        BadBench{"FractionalRepeats", {"--repeat", "2.5"}, {"--repeat", "\"2.5\""}},
+        BadBench{"RepeatsBeyondExactCounts",
+                 {"--n", "1000", "--collisions-per-ball", "1e12", "--repeat", "100"},
+                 {"--repeat", "\"100\"", "2^53"}},
         BadBench{"UnknownOption", {"--frobnicate", "3"}, {"--frobnicate", "--help"}}),
     [](const ::testing::TestParamInfo<BadBench>& param) { return param.param.name; });
 

@@ -1,7 +1,8 @@
 # carom: the two commands a newcomer needs, each complete on a fresh Debian machine.
 #   make run    install what is missing, build, run the billiards break (examples/), summarise it
 #   make test   install what is missing, then everything CI checks
-# More: make bench (core benchmarks, optimised build), make fuzz (the fuzz targets, 10 minutes
+# More: make bench (core benchmarks, optimised build), make bench-instructions (the engine's
+# instructions a collision, counted by callgrind), make fuzz (the fuzz targets, 10 minutes
 # each), make format, make lint (make lint-deep with the static analyzer), make clean.
 # Browser playground: make playground (serve it), make test-web, make bench-web.
 
@@ -281,6 +282,17 @@ bench-peers: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_peers
 	build/release/bench/peers/carom_peers report --out docs/peers.md --command "make bench-peers"
+
+# Instructions a collision of the engine on the hard-disk gas, counted by callgrind: the same on
+# every run of the same binary, whatever the host is doing (bench/instructions_per_collision.sh;
+# docs/performance.md, twelfth slice). About 15 s a gas of 10⁴ disks, 2 minutes at 10⁵.
+INSTRUCTION_GASES ?= 10000 0.3 10000 0.6
+.PHONY: bench-instructions
+bench-instructions: deps
+	$(MAKE) --no-print-directory deps PACKAGES=valgrind
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_world_gas_probe
+	bench/instructions_per_collision.sh build/release/bench/carom_world_gas_probe $(INSTRUCTION_GASES)
 
 # The soak test (issue 8; not in make test): 10⁸ collisions of the hard-disk gas at packing 0.6,
 # audited every 10⁶, with energy, momentum and memory checked (bench/world_soak.cpp). Minutes.

@@ -10,7 +10,7 @@ namespace carom::cli {
 
 namespace {
 
-// A byte count as people write cache sizes: KiB, MiB or GiB where it divides evenly.
+// A byte count as people write cache sizes: in MiB or KiB where it divides evenly.
 std::string cache_text(std::uint64_t bytes) {
   if (bytes == 0) return "unknown";
   constexpr std::uint64_t kKiB = 1024;

@@ -12,8 +12,9 @@ namespace carom::detail {
 
 // A short list of fixed capacity whose pushes past it overwrite the last item: the lookahead
 // only prefetches, so dropping a few under a burst costs a few misses, never a result.
-template <typename T, std::uint32_t kCapacity>
+template <typename T, std::uint32_t N>
 struct DropList {
+  static constexpr std::uint32_t kCapacity = N;
   std::array<T, kCapacity> items{};
   std::uint32_t count = 0;
 
@@ -21,6 +22,14 @@ struct DropList {
   void push_if(T value, bool keep) {
     items[count] = value;
     count += static_cast<std::uint32_t>(keep & (count + 1 < kCapacity));
+  }
+  // A burst of pushes keeps the count in a local instead: after each item of push_if GCC
+  // stores `count` and loads it again (an item of the same type may alias it), some 12
+  // instructions an item chained through memory. The caller checks the room for the whole
+  // burst first (at + n <= kCapacity), takes `at` from count, and stores it back after.
+  [[nodiscard]] std::uint32_t push_if_at(std::uint32_t at, T value, bool keep) {
+    items[at] = value;
+    return at + static_cast<std::uint32_t>(keep);
   }
   void clear() { count = 0; }
   [[nodiscard]] const T* begin() const { return items.data(); }

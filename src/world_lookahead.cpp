@@ -107,15 +107,18 @@ void World::Impl::lookahead_noted() {
   const std::int32_t nx = grid.nx();
   const std::int32_t cells = nx * grid.ny();
   auto& firsts = lookahead.first_balls[now];
+  std::uint32_t found = firsts.count;
   for (const std::int32_t cell : lookahead.cells[last]) {
     if (cell <= nx || cell + nx + 1 >= cells) continue;
+    if (found + 9 > firsts.kCapacity) break;  // (a burst past the list's room drops the rest)
     for (const std::int32_t row : {cell - nx, cell, cell + nx}) {
       for (std::int32_t at = row - 1; at <= row + 1; ++at) {
         const std::int32_t head = grid.first_ball(at);
-        firsts.push_if(static_cast<std::uint32_t>(head), head != detail::kNoBall);
+        found = firsts.push_if_at(found, static_cast<std::uint32_t>(head), head != detail::kNoBall);
       }
     }
   }
+  firsts.count = found;
   for (const std::uint32_t first : firsts) {
     prefetch_slot(balls[first]);
     grid.prefetch_link(first);

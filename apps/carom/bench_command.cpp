@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include "option_value.hpp"
 #include "readable_number.hpp"
 #include "usage_error.hpp"
+#include "wall_clock.hpp"
 
 #ifndef CAROM_CLI_BUILD_TYPE
 #define CAROM_CLI_BUILD_TYPE ""
@@ -132,10 +134,6 @@ std::uint64_t peak_resident_bytes() {
   if (getrusage(RUSAGE_SELF, &usage) != 0) return 0;
   constexpr std::uint64_t kBytesPerKiB = 1024;
   return static_cast<std::uint64_t>(usage.ru_maxrss) * kBytesPerKiB;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 int run(const BenchOptions& options) {

@@ -2,8 +2,6 @@
 // hard disks in a periodic box (the scene of hard_disk_setup.hpp).
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

@@ -1,5 +1,6 @@
 #include "eos_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <atomic>
 #include <cmath>
 #include <exception>

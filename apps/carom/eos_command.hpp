@@ -3,8 +3,6 @@
 // beside Henderson's equation of state.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

@@ -3,8 +3,6 @@
 // distribution, g(r), ψ₆ and diffusion, each with a block-average error.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "wall_clock.hpp"
+
 namespace carom::cli {
 
 GasOutcome run_gas_session(const GasSpec& spec) {
@@ -16,8 +18,7 @@ GasOutcome run_gas_session(const GasSpec& spec) {
   const double duration = 2.0 * spec.collisions_per_disk / outcome.equilibration_rate;
   const auto start = std::chrono::steady_clock::now();
   outcome.results = science::measure_gas(world, cell, duration, settings);
-  outcome.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.wall_seconds = seconds_since(start);
   return outcome;
 }
 

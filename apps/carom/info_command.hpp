@@ -1,8 +1,6 @@
 // carom tool: `carom info SCENE`, what a scene file holds and whether it is valid.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

@@ -1,5 +1,6 @@
 #include "render_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <filesystem>

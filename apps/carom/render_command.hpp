@@ -2,8 +2,6 @@
 // a run (GIF or MP4, through ffmpeg), or a plot of energy, momentum or the collision rate (SVG).
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "run_outputs.hpp"
 #include "run_report.hpp"
 #include "usage_error.hpp"
+#include "wall_clock.hpp"
 
 namespace carom::cli {
 namespace {
@@ -147,10 +149,6 @@ RunPlan parse(const RunOptions& o) {
     }
   }
   return plan;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double movable_mass(const SceneWorld& built) {

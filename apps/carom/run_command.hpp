@@ -2,8 +2,6 @@
 // number of collisions, and writing frames, contact events, the end state and a summary.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

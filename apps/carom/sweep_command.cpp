@@ -1,5 +1,6 @@
 #include "sweep_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <array>
 #include <iostream>
 #include <memory>

@@ -1,8 +1,6 @@
 // carom tool: `carom sweep`, the time of impact and bounce of two moving balls.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "command.hpp"
 
 namespace carom::cli {

@@ -1,0 +1,110 @@
+// carom tool: the command line. Each verb lives in its own *_command file; this file builds the
+// command line, dispatches to the verb the user named, and turns every error into one message on
+// stderr and an exit status (exit_codes.hpp), so no exception ever escapes.
+#include "command_line.hpp"
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "bench_command.hpp"
+#include "carom/error.hpp"
+#include "carom/scene.hpp"
+#include "command.hpp"
+#include "eos_command.hpp"
+#include "exit_codes.hpp"
+#include "gas_command.hpp"
+#include "info_command.hpp"
+#include "render_command.hpp"
+#include "run_command.hpp"
+#include "sweep_command.hpp"
+#include "usage_error.hpp"
+
+namespace {
+
+using carom::cli::kExitFailure;
+using carom::cli::kExitUsage;
+
+// "carom" or "carom sweep": who speaks in a message, and whose --help to suggest.
+std::string speaker(const CLI::App& app) {
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  return chosen.empty() ? app.get_name() : app.get_name() + " " + chosen.front()->get_name();
+}
+
+int fail(const CLI::App& app, int status, const std::string& message) {
+  std::cerr << speaker(app) << ": error: " << message << '\n';
+  return status;
+}
+
+// CLI11 reports a misspelt verb as a missing one; the user wants to hear about what they typed.
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc,
+                                char** argv) {
+  const bool verb_unknown = app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-';
+  if (!verb_unknown) return error.what();
+  std::string verbs;
+  for (const CLI::App* verb : app.get_subcommands([](const CLI::App*) { return true; })) {
+    verbs += (verbs.empty() ? "" : ", ") + verb->get_name();
+  }
+  return "\"" + std::string(argv[1]) + "\" is not a verb; the verbs are: " + verbs;
+}
+
+int run(const CLI::App& app, const carom::cli::Command& command) {
+  try {
+    const int status = command.run();
+    std::cout.flush();
+    if (!std::cout) return fail(app, kExitFailure, "cannot write to standard output");
+    return status;
+  } catch (const carom::cli::UsageError& error) {
+    return fail(app, kExitUsage, error.what());
+  } catch (const carom::InvalidArgument& error) {
+    return fail(app, kExitUsage, error.what());
+  } catch (const carom::SceneError& error) {
+    return fail(app, kExitUsage, error.what());
+  }
+}
+
+int parse_and_run(int argc, char** argv) {
+  CLI::App app{"carom: exact continuous collision of moving balls in 2D.", "carom"};
+  app.set_version_flag("--version", std::string("carom ") + CAROM_VERSION);
+  app.require_subcommand(1);
+  app.footer("Run 'carom VERB --help' for the options of a verb.");
+  const std::vector<carom::cli::Command> commands{
+      carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
+      carom::cli::add_gas_command(app),   carom::cli::add_eos_command(app),
+      carom::cli::add_run_command(app),   carom::cli::add_info_command(app),
+      carom::cli::add_render_command(app)};
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& done) {  // --help or --version: printed, nothing else to do
+    return app.exit(done);
+  } catch (const CLI::ParseError& error) {
+    return fail(
+        app, kExitUsage,
+        parse_error_message(app, error, argc, argv) + " (see '" + speaker(app) + " --help')");
+  }
+
+  for (const carom::cli::Command& command : commands) {
+    if (command.subcommand->parsed()) return run(app, command);
+  }
+  return fail(app, kExitFailure, "no verb to run");  // require_subcommand(1) makes this unreachable
+}
+
+}  // namespace
+
+namespace carom::cli {
+
+int run_command_line(int argc, char** argv) {
+  try {
+    return parse_and_run(argc, argv);
+  } catch (const std::exception& error) {
+    std::cerr << "carom: internal error: " << error.what() << '\n';
+  } catch (...) {
+    std::cerr << "carom: internal error\n";
+  }
+  return kExitFailure;
+}
+
+}  // namespace carom::cli

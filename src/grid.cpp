@@ -41,7 +41,9 @@ void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool p
   tabulate_exits(exits_x_, lower.x, cell.x, nx, hysteresis.x, periodic, closed);
   tabulate_exits(exits_y_, lower.y, cell.y, ny, hysteresis.y, periodic, closed);
   const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
-  head_.assign(cells, kNoBall);
+  // One head past the last cell, never a ball's: block_heads reads four heads where a row of
+  // the block has three, and the last row's fourth may be that one.
+  head_.assign(cells + 1, kNoBall);
   wall_start_.clear();
   wall_ids_.clear();
   next_.assign(ball_capacity, kNoBall);

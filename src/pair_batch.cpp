@@ -20,14 +20,9 @@
 namespace carom::detail {
 namespace {
 
-// Pair k, one at a time; its bits of the masks are clear on entry.
-void solve_pair(PairBatch& batch, std::size_t k, double horizon) {
-  // The lane's values first, so that every test below is on plain locals.
-  const double s_x = batch.sx[k];
-  const double s_y = batch.sy[k];
-  const double u_x = batch.ux[k];
-  const double u_y = batch.uy[k];
-  const double r = batch.reach[k];
+// Pair k, one at a time, from its values; its bits of the masks are clear on entry.
+void solve_pair(PairBatch& batch, std::size_t k, double s_x, double s_y, double u_x, double u_y,
+                double r, double horizon) {
   const double b = s_x * u_x + s_y * u_y;  // dot(s, u)
   const double ss = s_x * s_x + s_y * s_y;
   const double uu = u_x * u_x + u_y * u_y;
@@ -50,12 +45,65 @@ void solve_pair(PairBatch& batch, std::size_t k, double horizon) {
   batch.rescales |= static_cast<std::uint32_t>(!in_range) << k;
 }
 
+// Pair k of the pushed arrays.
+void solve_pushed_pair(PairBatch& batch, std::size_t k, double horizon) {
+  solve_pair(batch, k, batch.sx[k], batch.sy[k], batch.ux[k], batch.uy[k], batch.reach[k], horizon);
+}
+
 #ifdef CAROM_PAIR_BATCH_AVX2
 
 constexpr std::size_t kLanes = 4;
 static_assert(PairBatch::kCapacity % kLanes == 0);
 
-// solve_pair's operations on four pairs at once.
+// solve_pair's operations on four pairs at once: the lanes' times (stored to t), and the
+// lanes in the exact range and those that hit as bits 0 to 3.
+struct FourPairs {
+  std::uint32_t in_range;
+  std::uint32_t hit;
+};
+__attribute__((target("avx2"), always_inline)) inline FourPairs solve_four(__m256d s_x, __m256d s_y,
+                                                                           __m256d u_x, __m256d u_y,
+                                                                           __m256d r, __m256d limit,
+                                                                           double* t) {
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d low = _mm256_set1_pd(kSquareLow);
+  const __m256d high = _mm256_set1_pd(kSquareHigh);
+  const __m256d b = _mm256_add_pd(_mm256_mul_pd(s_x, u_x), _mm256_mul_pd(s_y, u_y));
+  const __m256d ss = _mm256_add_pd(_mm256_mul_pd(s_x, s_x), _mm256_mul_pd(s_y, s_y));
+  const __m256d uu = _mm256_add_pd(_mm256_mul_pd(u_x, u_x), _mm256_mul_pd(u_y, u_y));
+  const __m256d rr = _mm256_mul_pd(r, r);
+  const __m256d c = _mm256_sub_pd(ss, rr);
+  const __m256d h = _mm256_sub_pd(_mm256_mul_pd(s_x, u_y), _mm256_mul_pd(s_y, u_x));
+  const __m256d discriminant = _mm256_sub_pd(_mm256_mul_pd(uu, rr), _mm256_mul_pd(h, h));
+  const __m256d hit_time = _mm256_div_pd(c, _mm256_sub_pd(_mm256_sqrt_pd(discriminant), b));
+  const __m256d s_zero =
+      _mm256_and_pd(_mm256_cmp_pd(s_x, zero, _CMP_EQ_OQ), _mm256_cmp_pd(s_y, zero, _CMP_EQ_OQ));
+  const __m256d u_zero =
+      _mm256_and_pd(_mm256_cmp_pd(u_x, zero, _CMP_EQ_OQ), _mm256_cmp_pd(u_y, zero, _CMP_EQ_OQ));
+  const __m256d s_in = _mm256_or_pd(
+      _mm256_and_pd(_mm256_cmp_pd(ss, low, _CMP_GE_OQ), _mm256_cmp_pd(ss, high, _CMP_LE_OQ)),
+      s_zero);
+  const __m256d u_in = _mm256_or_pd(
+      _mm256_and_pd(_mm256_cmp_pd(uu, low, _CMP_GE_OQ), _mm256_cmp_pd(uu, high, _CMP_LE_OQ)),
+      u_zero);
+  const __m256d r_in =
+      _mm256_and_pd(_mm256_cmp_pd(rr, low, _CMP_GE_OQ), _mm256_cmp_pd(rr, high, _CMP_LE_OQ));
+  const __m256d in_range = _mm256_and_pd(_mm256_and_pd(s_in, u_in), r_in);
+  const __m256d inside = _mm256_cmp_pd(c, zero, _CMP_LE_OQ);
+  const __m256d meets = _mm256_and_pd(_mm256_cmp_pd(discriminant, zero, _CMP_GT_OQ),
+                                      _mm256_cmp_pd(hit_time, limit, _CMP_LE_OQ));
+  const __m256d hit =
+      _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_LT_OQ), _mm256_or_pd(inside, meets));
+  _mm256_store_pd(t, _mm256_blendv_pd(hit_time, zero, inside));
+  return {static_cast<std::uint32_t>(_mm256_movemask_pd(in_range)),
+          static_cast<std::uint32_t>(_mm256_movemask_pd(hit))};
+}
+
+// The lanes used by `count` pairs (a full batch keeps all 32 bits).
+std::uint32_t used_lanes(std::size_t count) {
+  return count == PairBatch::kCapacity ? ~0U : (1U << count) - 1U;
+}
+
 __attribute__((target("avx2"))) void solve_avx2(PairBatch& batch, double horizon) {
   // The last group's unused lanes get pairs moving apart (which miss); their outcomes are never
   // read, since the caller reads `count` of them. Four lanes are always written (the arrays have
@@ -69,52 +117,73 @@ __attribute__((target("avx2"))) void solve_avx2(PairBatch& batch, double horizon
   _mm256_storeu_pd(&batch.ux[batch.count], apart);
   _mm256_storeu_pd(&batch.uy[batch.count], apart);
   _mm256_storeu_pd(&batch.reach[batch.count], half);
-  const __m256d zero = _mm256_setzero_pd();
-  const __m256d low = _mm256_set1_pd(kSquareLow);
-  const __m256d high = _mm256_set1_pd(kSquareHigh);
   const __m256d limit = _mm256_set1_pd(horizon);
   std::uint32_t hits = 0;
   std::uint32_t rescales = 0;
   for (std::size_t k = 0; k < padded; k += kLanes) {
-    const __m256d s_x = _mm256_load_pd(&batch.sx[k]);
-    const __m256d s_y = _mm256_load_pd(&batch.sy[k]);
-    const __m256d u_x = _mm256_load_pd(&batch.ux[k]);
-    const __m256d u_y = _mm256_load_pd(&batch.uy[k]);
-    const __m256d r = _mm256_load_pd(&batch.reach[k]);
-    const __m256d b = _mm256_add_pd(_mm256_mul_pd(s_x, u_x), _mm256_mul_pd(s_y, u_y));
-    const __m256d ss = _mm256_add_pd(_mm256_mul_pd(s_x, s_x), _mm256_mul_pd(s_y, s_y));
-    const __m256d uu = _mm256_add_pd(_mm256_mul_pd(u_x, u_x), _mm256_mul_pd(u_y, u_y));
-    const __m256d rr = _mm256_mul_pd(r, r);
-    const __m256d c = _mm256_sub_pd(ss, rr);
-    const __m256d h = _mm256_sub_pd(_mm256_mul_pd(s_x, u_y), _mm256_mul_pd(s_y, u_x));
-    const __m256d discriminant = _mm256_sub_pd(_mm256_mul_pd(uu, rr), _mm256_mul_pd(h, h));
-    const __m256d hit_time = _mm256_div_pd(c, _mm256_sub_pd(_mm256_sqrt_pd(discriminant), b));
-    const __m256d s_zero =
-        _mm256_and_pd(_mm256_cmp_pd(s_x, zero, _CMP_EQ_OQ), _mm256_cmp_pd(s_y, zero, _CMP_EQ_OQ));
-    const __m256d u_zero =
-        _mm256_and_pd(_mm256_cmp_pd(u_x, zero, _CMP_EQ_OQ), _mm256_cmp_pd(u_y, zero, _CMP_EQ_OQ));
-    const __m256d s_in = _mm256_or_pd(
-        _mm256_and_pd(_mm256_cmp_pd(ss, low, _CMP_GE_OQ), _mm256_cmp_pd(ss, high, _CMP_LE_OQ)),
-        s_zero);
-    const __m256d u_in = _mm256_or_pd(
-        _mm256_and_pd(_mm256_cmp_pd(uu, low, _CMP_GE_OQ), _mm256_cmp_pd(uu, high, _CMP_LE_OQ)),
-        u_zero);
-    const __m256d r_in =
-        _mm256_and_pd(_mm256_cmp_pd(rr, low, _CMP_GE_OQ), _mm256_cmp_pd(rr, high, _CMP_LE_OQ));
-    const __m256d in_range = _mm256_and_pd(_mm256_and_pd(s_in, u_in), r_in);
-    const __m256d inside = _mm256_cmp_pd(c, zero, _CMP_LE_OQ);
-    const __m256d meets = _mm256_and_pd(_mm256_cmp_pd(discriminant, zero, _CMP_GT_OQ),
-                                        _mm256_cmp_pd(hit_time, limit, _CMP_LE_OQ));
-    const __m256d hit =
-        _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_LT_OQ), _mm256_or_pd(inside, meets));
-    _mm256_store_pd(&batch.t[k], _mm256_blendv_pd(hit_time, zero, inside));
-    const auto in_bits = static_cast<std::uint32_t>(_mm256_movemask_pd(in_range));
-    const auto hit_bits = static_cast<std::uint32_t>(_mm256_movemask_pd(hit));
-    hits |= (hit_bits & in_bits) << k;
-    rescales |= (~in_bits & 0xFU) << k;
+    const FourPairs four = solve_four(_mm256_load_pd(&batch.sx[k]), _mm256_load_pd(&batch.sy[k]),
+                                      _mm256_load_pd(&batch.ux[k]), _mm256_load_pd(&batch.uy[k]),
+                                      _mm256_load_pd(&batch.reach[k]), limit, &batch.t[k]);
+    hits |= (four.hit & four.in_range) << k;
+    rescales |= (~four.in_range & 0xFU) << k;
   }
-  // The padded lanes' bits dropped (a full batch keeps all 32).
-  const std::uint32_t used = batch.count == PairBatch::kCapacity ? ~0U : (1U << batch.count) - 1U;
+  const std::uint32_t used = used_lanes(batch.count);
+  batch.hits = hits & used;
+  batch.rescales = rescales & used;
+}
+
+// Two Vec2s, 16-byte aligned, as one vector: [first.x first.y second.x second.y].
+__attribute__((target("avx2"), always_inline)) inline __m256d pair_of(const double* first,
+                                                                      const double* second) {
+  return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_load_pd(first)), _mm_load_pd(second), 1);
+}
+
+// solve_slots: four neighbours' slots a step. The positions and velocities of balls a and c are
+// loaded as one vector ([x_a y_a x_c y_c]), those of b and d as another, and an unpack pairs them
+// into [x_a x_b x_c x_d] and [y_a y_b y_c y_d]; then slot_pair's operations, in its order.
+__attribute__((target("avx2"))) void solve_slots_avx2(PairBatch& batch, const BallSlot* slots,
+                                                      std::uint32_t self, Vec2 p, Vec2 v,
+                                                      double now, double radius_sum,
+                                                      double horizon) {
+  const std::size_t count = batch.count;
+  const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
+  // The last group's unused lanes read the ball itself (any slot would do): their outcomes are
+  // dropped below.
+  for (std::size_t k = 0; k < kLanes; ++k) batch.other[count + k] = self;
+  const __m256d p_x = _mm256_set1_pd(p.x);
+  const __m256d p_y = _mm256_set1_pd(p.y);
+  const __m256d v_x = _mm256_set1_pd(v.x);
+  const __m256d v_y = _mm256_set1_pd(v.y);
+  const __m256d at = _mm256_set1_pd(now);
+  const __m256d r = _mm256_set1_pd(radius_sum);
+  const __m256d limit = _mm256_set1_pd(horizon);
+  std::uint32_t hits = 0;
+  std::uint32_t rescales = 0;
+  for (std::size_t k = 0; k < padded; k += kLanes) {
+    const BallSlot& a = slots[batch.other[k]];
+    const BallSlot& b = slots[batch.other[k + 1]];
+    const BallSlot& c = slots[batch.other[k + 2]];
+    const BallSlot& d = slots[batch.other[k + 3]];
+    const __m256d position_ac = pair_of(&a.position.x, &c.position.x);
+    const __m256d position_bd = pair_of(&b.position.x, &d.position.x);
+    const __m256d velocity_ac = pair_of(&a.velocity.x, &c.velocity.x);
+    const __m256d velocity_bd = pair_of(&b.velocity.x, &d.velocity.x);
+    const __m256d o_vx = _mm256_unpacklo_pd(velocity_ac, velocity_bd);
+    const __m256d o_vy = _mm256_unpackhi_pd(velocity_ac, velocity_bd);
+    const __m256d elapsed =
+        _mm256_sub_pd(at, _mm256_set_pd(d.local_time, c.local_time, b.local_time, a.local_time));
+    // position + velocity·(now − local_time), then p minus it, and v minus the velocity.
+    const __m256d o_x =
+        _mm256_add_pd(_mm256_unpacklo_pd(position_ac, position_bd), _mm256_mul_pd(o_vx, elapsed));
+    const __m256d o_y =
+        _mm256_add_pd(_mm256_unpackhi_pd(position_ac, position_bd), _mm256_mul_pd(o_vy, elapsed));
+    const FourPairs four =
+        solve_four(_mm256_sub_pd(p_x, o_x), _mm256_sub_pd(p_y, o_y), _mm256_sub_pd(v_x, o_vx),
+                   _mm256_sub_pd(v_y, o_vy), r, limit, &batch.t[k]);
+    hits |= (four.hit & four.in_range) << k;
+    rescales |= (~four.in_range & 0xFU) << k;
+  }
+  const std::uint32_t used = used_lanes(count);
   batch.hits = hits & used;
   batch.rescales = rescales & used;
 }
@@ -144,7 +213,28 @@ void PairBatch::solve(double horizon) {
 void PairBatch::solve_one_by_one(double horizon) {
   hits = 0;
   rescales = 0;
-  for (std::size_t k = 0; k < count; ++k) solve_pair(*this, k, horizon);
+  for (std::size_t k = 0; k < count; ++k) solve_pushed_pair(*this, k, horizon);
+}
+
+void PairBatch::solve_slots_one_by_one(const BallSlot* slots, std::uint32_t /*self*/, Vec2 p,
+                                       Vec2 v, double now, double radius_sum, double horizon) {
+  hits = 0;
+  rescales = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const SlotPair pair = slot_pair(slots[other[k]], p, v, now);
+    solve_pair(*this, k, pair.s.x, pair.s.y, pair.u.x, pair.u.y, radius_sum, horizon);
+  }
+}
+
+void PairBatch::solve_slots(const BallSlot* slots, std::uint32_t self, Vec2 p, Vec2 v, double now,
+                            double radius_sum, double horizon) {
+#ifdef CAROM_PAIR_BATCH_AVX2
+  if (kHasAvx2) {
+    solve_slots_avx2(*this, slots, self, p, v, now, radius_sum, horizon);
+    return;
+  }
+#endif
+  solve_slots_one_by_one(slots, self, p, v, now, radius_sum, horizon);
 }
 
 }  // namespace carom::detail

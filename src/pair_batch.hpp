@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "ball_slot.hpp"
 #include "carom/vec2.hpp"
 
 namespace carom::detail {
@@ -34,7 +35,8 @@ struct PairBatch {
   // (bit k for pair k), so that the caller visits the few hits alone: pairs that hit, and pairs
   // outside the exact range (whose answer is the scalar, rescaled path's; the rest miss).
   alignas(64) std::array<double, kCapacity> t;
-  std::array<std::uint32_t, kCapacity> other;
+  // (Room for four more: solve_slots pads the last group of four with the ball itself.)
+  std::array<std::uint32_t, kInputCapacity> other;
   std::uint32_t hits = 0;
   std::uint32_t rescales = 0;
   std::size_t count = 0;
@@ -66,6 +68,31 @@ struct PairBatch {
   void solve(double horizon);
   // The same, one pair at a time whatever the CPU (what solve does without AVX2; for tests).
   void solve_one_by_one(double horizon);
+
+  // The pairs of one ball (slot `self`: at p, moving at v, at time `now`) with the balls
+  // other[0 .. count), read from their slots in `slots` rather than pushed: each pair's offset,
+  // relative velocity and reach are slot_pair's, formed inside the kernel, so that neighbours
+  // need no copying into the arrays above (which it leaves as they were). `radius_sum` is the sum
+  // of the two radii, the same for every pair (a world whose balls are all of one radius). The
+  // answers are those of push() and solve() on slot_pair's values, bit for bit. The ball itself
+  // is not among the others (its slot fills the last group of four). With AVX2 four pairs at a
+  // time.
+  void solve_slots(const BallSlot* slots, std::uint32_t self, Vec2 p, Vec2 v, double now,
+                   double radius_sum, double horizon);
+  // The same, one pair at a time whatever the CPU (for tests).
+  void solve_slots_one_by_one(const BallSlot* slots, std::uint32_t self, Vec2 p, Vec2 v, double now,
+                              double radius_sum, double horizon);
 };
+
+// A pair as the world's prediction forms it: the offset of the ball at p from the neighbour's
+// position at `now`, and the relative velocity (what solve_slots forms in its lanes, operation
+// for operation).
+struct SlotPair {
+  Vec2 s;
+  Vec2 u;
+};
+[[nodiscard]] inline SlotPair slot_pair(const BallSlot& other, Vec2 p, Vec2 v, double now) {
+  return {p - other.position_at(now), v - other.velocity};
+}
 
 }  // namespace carom::detail

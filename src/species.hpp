@@ -37,6 +37,7 @@ class SpeciesTable {
       ++table_[cached].balls;
       return cached;
     }
+    ++live_;
     std::uint32_t id = 0;
     if (free_.empty()) {
       id = static_cast<std::uint32_t>(table_.size());
@@ -51,8 +52,12 @@ class SpeciesTable {
   }
   // One ball fewer of species `id`; the number is reused once none is left.
   void release(std::uint32_t id) {
-    if (--table_[id].balls == 0) free_.push_back(id);
+    if (--table_[id].balls != 0) return;
+    free_.push_back(id);
+    --live_;
   }
+  // How many species have balls: 1 in a world whose balls are all of one kind.
+  [[nodiscard]] std::uint32_t live() const { return live_; }
   [[nodiscard]] const Species& operator[](std::uint32_t id) const { return table_[id]; }
 
  private:
@@ -77,6 +82,7 @@ class SpeciesTable {
 
   std::vector<Species> table_;
   std::vector<std::uint32_t> free_;
+  std::uint32_t live_ = 0;
   std::array<std::uint32_t, kCacheSize> cache_ = filled_cache();
 
   static std::array<std::uint32_t, kCacheSize> filled_cache() {

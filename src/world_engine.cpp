@@ -384,38 +384,119 @@ void World::Impl::predict(std::uint32_t ball) {
     if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
   }
 
-  // Balls in the neighbouring cells, gathered into a batch whose pairs are solved together
-  // (pair_batch.hpp), then each hit considered. Away from the grid's edges the 3×3 block is three
-  // runs of three cells and, in a periodic world, no difference needs the minimum image:
-  // neighbours lie within two cells, under half a period once the grid has five cells per axis
-  // (so skipping it changes no bit). The edge cells take the general path. The lambdas are
-  // inlined by force: each runs several times a prediction, where a call costs as much as its
-  // body.
-  const bool movable = kind.movable();
+  // Balls in the neighbouring cells. Away from the grid's edges the 3×3 block is three runs of
+  // three cells and, in a periodic world, no difference needs the minimum image: neighbours lie
+  // within two cells, under half a period once the grid has five cells per axis (so skipping it
+  // changes no bit). A gas (one kind of ball) there takes the named path; everything else the
+  // gathered one, which computes the same pairs the same way.
+  const bool interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
+                        grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
+  if (interior && kind.movable() && species.live() == 1) {
+    predict_named(ball, cx, cy, kind.radius + kind.radius, best);
+  } else {
+    predict_gathered(ball, cell, interior, best);
+  }
+  queue.set(ball, best);
+}
+
+// Keeps the earlier of `best` and a contact with `other` at `t` from now. Selected, not branched
+// on: whether a hit comes before the best so far is random.
+CAROM_ALWAYS_INLINE inline void World::Impl::consider_contact(Event& best, std::uint32_t other,
+                                                              double t) const {
+  Event candidate;
+  candidate.time = time + t;
+  candidate.kind = EventKind::ball_ball;
+  candidate.owner = best.owner;
+  candidate.partner = other;
+  candidate.partner_version = balls[other].version;
+  const Event options[2] = {best, candidate};
+  best = options[detail::earlier(candidate, best, handle_of.data())];
+}
+
+// The interior cell's neighbours of a ball in a world of one kind (each pair's reach is the
+// same): they are only named in the batch, and the kernel reads their slots itself
+// (pair_batch.hpp, solve_slots), without copies of their offsets. The ball itself is named too
+// (counted out again, so that where it sits in its cell's list needs no branch).
+CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(std::uint32_t ball, std::int32_t cx,
+                                                           std::int32_t cy, double reach,
+                                                           Event& best) const {
+  const Vec2 p = balls[ball].position;
+  const Vec2 v = balls[ball].velocity;
   detail::PairBatch batch;
-  const auto consider = [&](std::uint32_t other, double t) CAROM_ALWAYS_INLINE {
-    Event candidate;
-    candidate.time = time + t;
-    candidate.kind = EventKind::ball_ball;
-    candidate.owner = ball;
-    candidate.partner = other;
-    candidate.partner_version = balls[other].version;
-    // Selected, not branched on: whether a hit comes before the best so far is random.
-    const Event options[2] = {best, candidate};
-    best = options[detail::earlier(candidate, best, handle_of.data())];
-  };
-  const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
-    batch.solve(kFarFuture);
+  const auto solve = [&]() CAROM_ALWAYS_INLINE {
+    batch.solve_slots(balls.data(), ball, p, v, time, reach, kFarFuture);
     // The earliest by a total order, so the order the pairs are visited in changes nothing.
     for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
       const auto k = static_cast<std::size_t>(std::countr_zero(hits));
-      consider(batch.other[k], batch.t[k]);
+      consider_contact(best, batch.other[k], batch.t[k]);
+    }
+    for (std::uint32_t rescales = batch.rescales; rescales != 0; rescales &= rescales - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
+      const detail::SlotPair pair = detail::slot_pair(balls[batch.other[k]], p, v, time);
+      const detail::Crossing crossing =
+          detail::entry_crossing_rescaled({pair.s, pair.u, reach}, kFarFuture);
+      if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
+    }
+    batch.count = 0;
+  };
+  // (The count in a local: GCC keeps batch.count in memory, stored and loaded at every name.)
+  std::size_t count = 0;
+  const auto name_list = [&](std::int32_t first) CAROM_ALWAYS_INLINE {
+    for (std::int32_t j = first; j != detail::kNoBall;
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      batch.other[count] = static_cast<std::uint32_t>(j);
+      count += static_cast<std::size_t>(static_cast<std::uint32_t>(j) != ball);
+      if (count == detail::PairBatch::kCapacity) {
+        batch.count = count;
+        solve();
+        count = 0;
+      }
+    }
+  };
+  if (live_count >= kCellByCellMinBalls) {
+    // (Large worlds: see kCellByCellMinBalls.)
+    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
+      const std::int32_t first = grid.index(cx - 1, row);
+      for (std::int32_t k = 0; k < 3; ++k) name_list(grid.first_ball(first + k));
+    }
+  } else {
+    // Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3): the heads are read
+    // first and only the lists of occupied cells walked, in the same order.
+    const detail::Grid::BlockHeads block = grid.block_heads(cx, cy);
+    for (std::uint32_t occupied = block.occupied; occupied != 0; occupied &= occupied - 1) {
+      name_list(block.heads[std::countr_zero(occupied)]);
+    }
+  }
+  batch.count = count;
+  solve();
+}
+
+// Every other case: the edges of the grid (clipped, or wrapped with the minimum image), small
+// periodic grids (every image), worlds of several kinds. Neighbours are gathered into a batch
+// (offset, relative velocity, sum of radii) whose pairs are solved together (pair_batch.hpp),
+// then each hit considered. The lambdas are inlined by force: each runs several times a
+// prediction, where a call costs as much as its body.
+[[gnu::noinline]] void World::Impl::predict_gathered(std::uint32_t ball, std::int32_t cell,
+                                                     bool interior, Event& best) const {
+  const BallSlot& b = balls[ball];
+  const Vec2 p = b.position;
+  const Vec2 v = b.velocity;
+  const detail::Species& kind = species[b.species];
+  const std::int32_t cx = grid.column(cell);
+  const std::int32_t cy = grid.row(cell);
+  const bool movable = kind.movable();
+  detail::PairBatch batch;
+  const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
+    batch.solve(kFarFuture);
+    for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(hits));
+      consider_contact(best, batch.other[k], batch.t[k]);
     }
     for (std::uint32_t rescales = batch.rescales; rescales != 0; rescales &= rescales - 1) {
       const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
       const detail::Crossing crossing = detail::entry_crossing_rescaled(
           {{batch.sx[k], batch.sy[k]}, {batch.ux[k], batch.uy[k]}, batch.reach[k]}, kFarFuture);
-      if (crossing.found) consider(batch.other[k], crossing.t);
+      if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
     }
     batch.count = 0;
   };
@@ -435,19 +516,18 @@ void World::Impl::predict(std::uint32_t ball) {
       const BallSlot& o = balls[other];
       const detail::Species& other_kind = species[o.species];
       if (!movable && !other_kind.movable()) continue;  // nothing can respond
-      const Vec2 offset = p - position_at(other, time);
-      const Vec2 u = v - o.velocity;
+      const detail::SlotPair pair = detail::slot_pair(o, p, v, time);
       const double reach = kind.radius + other_kind.radius;
       if constexpr (images == kDirect) {
-        batch.push_unless(offset, u, reach, other, other == ball);
+        batch.push_unless(pair.s, pair.u, reach, other, other == ball);
       } else if constexpr (images == kNearest) {
-        batch.push_unless(minimum_image(offset), u, reach, other, other == ball);
+        batch.push_unless(minimum_image(pair.s), pair.u, reach, other, other == ball);
       } else {
-        const Vec2 nearest = minimum_image(offset);
+        const Vec2 nearest = minimum_image(pair.s);
         for (int kx = -1; kx <= 1; ++kx) {
           for (int ky = -1; ky <= 1; ++ky) {
             if (batch.count + 1 > detail::PairBatch::kCapacity) solve_batch();
-            batch.push(nearest + Vec2{kx * period.x, ky * period.y}, u, reach, other);
+            batch.push(nearest + Vec2{kx * period.x, ky * period.y}, pair.u, reach, other);
           }
         }
       }
@@ -464,8 +544,6 @@ void World::Impl::predict(std::uint32_t ball) {
   // than the one nearest when it was predicted (docs/world.md, "Boundaries"): all nine are tried.
   const bool few_cells =
       periodic && (grid.nx() < kSingleImageMinCells || grid.ny() < kSingleImageMinCells);
-  const bool interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
-                        grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
   if (few_cells) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Around{}); });
   } else if (interior && live_count >= kCellByCellMinBalls) {
@@ -475,21 +553,12 @@ void World::Impl::predict(std::uint32_t ball) {
       for (std::int32_t k = 0; k < 3; ++k) gather(first + k, Direct{});
     }
   } else if (interior) {
-    // Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3): the heads are read
-    // first and only the lists of occupied cells walked, in the same order, so that an empty
-    // cell costs a comparison rather than a turn of the loop and a branch that often mispredicts.
-    std::int32_t heads[9];
-    std::uint32_t occupied = 0;
-    for (int row = 0; row < 3; ++row) {
-      const std::int32_t first = grid.index(cx - 1, cy - 1 + row);
-      for (int k = 0; k < 3; ++k) {
-        const int at = 3 * row + k;
-        heads[at] = grid.first_ball(first + k);
-        occupied |= static_cast<std::uint32_t>(heads[at] != detail::kNoBall) << at;
-      }
-    }
-    for (; occupied != 0; occupied &= occupied - 1) {
-      gather_list(heads[std::countr_zero(occupied)], Direct{});
+    // Most of the nine cells are empty: only the lists of occupied cells are walked, in order,
+    // so that an empty cell costs a comparison rather than a turn of the loop and a branch that
+    // often mispredicts.
+    const detail::Grid::BlockHeads block = grid.block_heads(cx, cy);
+    for (std::uint32_t occupied = block.occupied; occupied != 0; occupied &= occupied - 1) {
+      gather_list(block.heads[std::countr_zero(occupied)], Direct{});
     }
   } else if (periodic) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Nearest{}); });
@@ -497,7 +566,6 @@ void World::Impl::predict(std::uint32_t ball) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Direct{}); });
   }
   solve_batch();
-  queue.set(ball, best);
 }
 
 // ---- the event loop -----------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ball_slot.hpp"
 #include "carom/bounce.hpp"  // kImmovable
 #include "carom/world.hpp"
 #include "event_queue.hpp"
@@ -33,23 +34,6 @@ inline constexpr double kCellMargin = 1e-6;
 // predicted, below half a period from kSingleImageMinCells (7) cells on (docs/world.md,
 // "Boundaries"). Dilute cells have just under it; larger ones meet it.
 inline constexpr double kMostHysteresis = 0.1;
-
-inline constexpr std::uint32_t kNoSpecies = 0xFFFFFFFFu;  // a free slot's
-
-// A ball slot: what prediction reads of every candidate partner, 48 bytes (the radius and mass
-// it reads too are its species', species.hpp). A ball moves in a straight line between its
-// events, so it is stored at its own local time: its position at any later time t is
-// position + velocity·(t − local_time).
-struct alignas(16) BallSlot {
-  Vec2 position;
-  Vec2 velocity;
-  double local_time = 0.0;
-  std::uint32_t species = kNoSpecies;  // kNoSpecies while the slot is free
-  std::uint32_t version = 0;           // bumped whenever the trajectory changes
-
-  [[nodiscard]] bool alive() const { return species != kNoSpecies; }
-};
-static_assert(sizeof(BallSlot) == 48);
 
 // The rest of a ball, read only by the API (kept apart so that prediction's scans of
 // neighbours touch only the slots).
@@ -131,8 +115,7 @@ struct World::Impl {
   [[nodiscard]] double radius_of(std::uint32_t ball) const { return species_of(ball).radius; }
   [[nodiscard]] bool movable(std::uint32_t ball) const { return species_of(ball).movable(); }
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
-    const detail::BallSlot& b = balls[ball];
-    return b.position + b.velocity * (t - b.local_time);
+    return balls[ball].position_at(t);
   }
   // The shortest of the periodic images of d (d itself in a world that does not wrap).
   [[nodiscard]] Vec2 minimum_image(Vec2 d) const {
@@ -212,6 +195,14 @@ struct World::Impl {
   // Renumbers the slots cell by cell (docs/world.md, "Memory order"); changes no result.
   void sort_by_cell();
   void predict(std::uint32_t ball);
+  // predict's contacts with the balls around (world_engine.cpp): read from their slots by the
+  // pair kernel (an interior cell of a world of one kind, `reach` the sum of two radii), or
+  // gathered (every case).
+  void predict_named(std::uint32_t ball, std::int32_t cx, std::int32_t cy, double reach,
+                     detail::Event& best) const;
+  void predict_gathered(std::uint32_t ball, std::int32_t cell, bool interior,
+                        detail::Event& best) const;
+  void consider_contact(detail::Event& best, std::uint32_t other, double t) const;
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
   // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts.

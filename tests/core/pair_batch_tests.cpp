@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "circle_crossing.hpp"
 #include "pair_batch.hpp"
@@ -102,6 +103,70 @@ TEST(PairBatch, SolvesEveryPairAsTheScalarEntryCrossing) {
 
 TEST(PairBatch, SolvesEveryPairOneByOneAsTheScalarEntryCrossing) {
   check_pair_batch_solver(&detail::PairBatch::solve_one_by_one);
+}
+
+// solve_slots (the neighbours read from their slots inside the kernel) against what the world's
+// general path does with the same slots: slot_pair's values pushed, then solve. Every outcome and
+// every time the same, bit for bit, on batches of every size (a neighbour may be named twice),
+// neighbours stored at earlier local times, and magnitudes of every scale.
+void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*, std::uint32_t,
+                                                         Vec2, Vec2, double, double, double)) {
+  std::mt19937_64 random(20261201);
+  std::uniform_real_distribution<double> earlier(0.0, 3.0);
+  constexpr std::uint32_t kSlots = 64;
+  std::vector<detail::BallSlot> slots(kSlots);
+  detail::PairBatch named;
+  detail::PairBatch pushed;
+  int hits = 0;
+  int rescaled = 0;
+  for (int round = 0; round < 4000; ++round) {
+    const double now = 5.0;
+    for (detail::BallSlot& slot : slots) {
+      slot.position = {coordinate(random), coordinate(random)};
+      slot.velocity = {coordinate(random), coordinate(random)};
+      slot.local_time = now - (random() % 4 == 0 ? 0.0 : earlier(random));
+      slot.species = 0;
+    }
+    const auto self = static_cast<std::uint32_t>(random() % kSlots);
+    slots[self].local_time = now;  // prediction's ball is at the world's time
+    const Vec2 p = slots[self].position;
+    const Vec2 v = slots[self].velocity;
+    const double r = reach(random);
+    if (random() % 16 == 0) slots[(self + 1) % kSlots].position = p + Vec2{r * 0.25, 0.0};
+    named.count = 0;
+    pushed.count = 0;
+    const std::size_t size = 1 + random() % detail::PairBatch::kCapacity;
+    while (named.count < size) {
+      const auto other = static_cast<std::uint32_t>(random() % kSlots);
+      if (other == self) continue;
+      named.other[named.count++] = other;
+      const detail::SlotPair pair = detail::slot_pair(slots[other], p, v, now);
+      pushed.push(pair.s, pair.u, r, other);
+    }
+    (named.*solver)(slots.data(), self, p, v, now, r, kHorizon);
+    pushed.solve(kHorizon);
+    for (std::size_t k = 0; k < size; ++k) {
+      const auto expected = pushed.outcome(k);
+      ASSERT_EQ(named.outcome(k), expected) << "round " << round << ", pair " << k;
+      if (expected == detail::PairBatch::kHit) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(named.t[k]),
+                  std::bit_cast<std::uint64_t>(pushed.t[k]))
+            << "round " << round << ", pair " << k;
+        ++hits;
+      }
+      if (expected == detail::PairBatch::kRescale) ++rescaled;
+    }
+  }
+  EXPECT_GT(hits, 500);
+  EXPECT_GT(rescaled, 500);
+}
+
+TEST(PairBatch, SolvesNamedSlotsAsThePushedPairs) {
+  check_slot_solver(&detail::PairBatch::solve_slots);
+}
+
+TEST(PairBatch, SolvesNamedSlotsOneByOneAsThePushedPairs) {
+  check_slot_solver(&detail::PairBatch::solve_slots_one_by_one);
 }
 
 }  // namespace

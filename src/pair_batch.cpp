@@ -140,23 +140,24 @@ __attribute__((target("avx2"), always_inline)) inline __m256d pair_of(const doub
 
 // solve_slots: four neighbours' slots a step. The positions and velocities of balls a and c are
 // loaded as one vector ([x_a y_a x_c y_c]), those of b and d as another, and an unpack pairs them
-// into [x_a x_b x_c x_d] and [y_a y_b y_c y_d]; then slot_pair's operations, in its order.
+// into [x_a x_b x_c x_d] and [y_a y_b y_c y_d]; then slot_pair's operations, in its order. With
+// kOneKind every reach is radius + radius, else radius + each neighbour's species' radius.
+template <bool kOneKind>
 __attribute__((target("avx2"))) void solve_slots_avx2(PairBatch& batch, const BallSlot* slots,
-                                                      std::uint32_t self, Vec2 p, Vec2 v,
-                                                      double now, double radius_sum,
-                                                      double horizon) {
+                                                      const SlotQuery& query) {
   const std::size_t count = batch.count;
   const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
   // The last group's unused lanes read the ball itself (any slot would do): their outcomes are
   // dropped below.
-  for (std::size_t k = 0; k < kLanes; ++k) batch.other[count + k] = self;
-  const __m256d p_x = _mm256_set1_pd(p.x);
-  const __m256d p_y = _mm256_set1_pd(p.y);
-  const __m256d v_x = _mm256_set1_pd(v.x);
-  const __m256d v_y = _mm256_set1_pd(v.y);
-  const __m256d at = _mm256_set1_pd(now);
-  const __m256d r = _mm256_set1_pd(radius_sum);
-  const __m256d limit = _mm256_set1_pd(horizon);
+  for (std::size_t k = 0; k < kLanes; ++k) batch.other[count + k] = query.self;
+  const __m256d p_x = _mm256_set1_pd(query.p.x);
+  const __m256d p_y = _mm256_set1_pd(query.p.y);
+  const __m256d v_x = _mm256_set1_pd(query.v.x);
+  const __m256d v_y = _mm256_set1_pd(query.v.y);
+  const __m256d at = _mm256_set1_pd(query.now);
+  const __m256d radius = _mm256_set1_pd(query.radius);
+  const __m256d one_reach = _mm256_add_pd(radius, radius);
+  const __m256d limit = _mm256_set1_pd(query.horizon);
   std::uint32_t hits = 0;
   std::uint32_t rescales = 0;
   for (std::size_t k = 0; k < padded; k += kLanes) {
@@ -177,9 +178,16 @@ __attribute__((target("avx2"))) void solve_slots_avx2(PairBatch& batch, const Ba
         _mm256_add_pd(_mm256_unpacklo_pd(position_ac, position_bd), _mm256_mul_pd(o_vx, elapsed));
     const __m256d o_y =
         _mm256_add_pd(_mm256_unpackhi_pd(position_ac, position_bd), _mm256_mul_pd(o_vy, elapsed));
+    __m256d reach = one_reach;
+    if constexpr (!kOneKind) {
+      const Species* kinds = query.species;
+      reach =
+          _mm256_add_pd(radius, _mm256_set_pd(kinds[d.species].radius, kinds[c.species].radius,
+                                              kinds[b.species].radius, kinds[a.species].radius));
+    }
     const FourPairs four =
         solve_four(_mm256_sub_pd(p_x, o_x), _mm256_sub_pd(p_y, o_y), _mm256_sub_pd(v_x, o_vx),
-                   _mm256_sub_pd(v_y, o_vy), r, limit, &batch.t[k]);
+                   _mm256_sub_pd(v_y, o_vy), reach, limit, &batch.t[k]);
     hits |= (four.hit & four.in_range) << k;
     rescales |= (~four.in_range & 0xFU) << k;
   }
@@ -216,25 +224,29 @@ void PairBatch::solve_one_by_one(double horizon) {
   for (std::size_t k = 0; k < count; ++k) solve_pushed_pair(*this, k, horizon);
 }
 
-void PairBatch::solve_slots_one_by_one(const BallSlot* slots, std::uint32_t /*self*/, Vec2 p,
-                                       Vec2 v, double now, double radius_sum, double horizon) {
+void PairBatch::solve_slots_one_by_one(const BallSlot* slots, const SlotQuery& query) {
   hits = 0;
   rescales = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    const SlotPair pair = slot_pair(slots[other[k]], p, v, now);
-    solve_pair(*this, k, pair.s.x, pair.s.y, pair.u.x, pair.u.y, radius_sum, horizon);
+    const BallSlot& neighbour = slots[other[k]];
+    const SlotPair pair = slot_pair(neighbour, query.p, query.v, query.now);
+    solve_pair(*this, k, pair.s.x, pair.s.y, pair.u.x, pair.u.y, slot_reach(neighbour, query),
+               query.horizon);
   }
 }
 
-void PairBatch::solve_slots(const BallSlot* slots, std::uint32_t self, Vec2 p, Vec2 v, double now,
-                            double radius_sum, double horizon) {
+void PairBatch::solve_slots(const BallSlot* slots, const SlotQuery& query) {
 #ifdef CAROM_PAIR_BATCH_AVX2
   if (kHasAvx2) {
-    solve_slots_avx2(*this, slots, self, p, v, now, radius_sum, horizon);
+    if (query.species == nullptr) {
+      solve_slots_avx2<true>(*this, slots, query);
+    } else {
+      solve_slots_avx2<false>(*this, slots, query);
+    }
     return;
   }
 #endif
-  solve_slots_one_by_one(slots, self, p, v, now, radius_sum, horizon);
+  solve_slots_one_by_one(slots, query);
 }
 
 }  // namespace carom::detail

@@ -13,8 +13,23 @@
 
 #include "ball_slot.hpp"
 #include "carom/vec2.hpp"
+#include "species.hpp"
 
 namespace carom::detail {
+
+// What solve_slots needs of the ball whose pairs it solves: its slot, where it is (p) and how it
+// moves (v) at time `now`, its radius, and the horizon of solve(). A pair's reach is
+// radius + the neighbour's radius: species[neighbour's species].radius, or, where `species` is
+// null (a world of one kind), radius again.
+struct SlotQuery {
+  std::uint32_t self = 0;
+  Vec2 p;
+  Vec2 v;
+  double now = 0.0;
+  double radius = 0.0;
+  const Species* species = nullptr;
+  double horizon = 0.0;
+};
 
 struct PairBatch {
   static constexpr std::size_t kCapacity = 32;  // a bit of a 32-bit mask per pair
@@ -69,19 +84,15 @@ struct PairBatch {
   // The same, one pair at a time whatever the CPU (what solve does without AVX2; for tests).
   void solve_one_by_one(double horizon);
 
-  // The pairs of one ball (slot `self`: at p, moving at v, at time `now`) with the balls
-  // other[0 .. count), read from their slots in `slots` rather than pushed: each pair's offset,
-  // relative velocity and reach are slot_pair's, formed inside the kernel, so that neighbours
-  // need no copying into the arrays above (which it leaves as they were). `radius_sum` is the sum
-  // of the two radii, the same for every pair (a world whose balls are all of one radius). The
-  // answers are those of push() and solve() on slot_pair's values, bit for bit. The ball itself
-  // is not among the others (its slot fills the last group of four). With AVX2 four pairs at a
-  // time.
-  void solve_slots(const BallSlot* slots, std::uint32_t self, Vec2 p, Vec2 v, double now,
-                   double radius_sum, double horizon);
+  // The pairs of one ball with the balls other[0 .. count), read from their slots rather than
+  // pushed: each pair's offset, relative velocity and reach are slot_pair's, formed inside the
+  // kernel, so that neighbours need no copying into the arrays above (which it leaves as they
+  // were). The answers are those of push() and solve() on slot_pair's values, bit for bit. The
+  // ball itself is not among the others (its slot fills the last group of four). With AVX2 four
+  // pairs at a time.
+  void solve_slots(const BallSlot* slots, const SlotQuery& query);
   // The same, one pair at a time whatever the CPU (for tests).
-  void solve_slots_one_by_one(const BallSlot* slots, std::uint32_t self, Vec2 p, Vec2 v, double now,
-                              double radius_sum, double horizon);
+  void solve_slots_one_by_one(const BallSlot* slots, const SlotQuery& query);
 };
 
 // A pair as the world's prediction forms it: the offset of the ball at p from the neighbour's
@@ -93,6 +104,11 @@ struct SlotPair {
 };
 [[nodiscard]] inline SlotPair slot_pair(const BallSlot& other, Vec2 p, Vec2 v, double now) {
   return {p - other.position_at(now), v - other.velocity};
+}
+// The pair's sum of radii, as SlotQuery says.
+[[nodiscard]] inline double slot_reach(const BallSlot& other, const SlotQuery& query) {
+  return query.radius +
+         (query.species != nullptr ? query.species[other.species].radius : query.radius);
 }
 
 }  // namespace carom::detail

@@ -59,6 +59,7 @@ class SpeciesTable {
   // How many species have balls: 1 in a world whose balls are all of one kind.
   [[nodiscard]] std::uint32_t live() const { return live_; }
   [[nodiscard]] const Species& operator[](std::uint32_t id) const { return table_[id]; }
+  [[nodiscard]] const Species* data() const { return table_.data(); }
 
  private:
   using Key = std::array<std::uint64_t, 3>;

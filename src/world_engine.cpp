@@ -387,12 +387,20 @@ void World::Impl::predict(std::uint32_t ball) {
   // Balls in the neighbouring cells. Away from the grid's edges the 3×3 block is three runs of
   // three cells and, in a periodic world, no difference needs the minimum image: neighbours lie
   // within two cells, under half a period once the grid has five cells per axis (so skipping it
-  // changes no bit). A gas (one kind of ball) there takes the named path; everything else the
-  // gathered one, which computes the same pairs the same way.
+  // changes no bit). A movable ball there takes the named path; everything else the gathered
+  // one, which computes the same pairs the same way.
   const bool interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
                         grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
-  if (interior && kind.movable() && species.live() == 1) {
-    predict_named(ball, cx, cy, kind.radius + kind.radius, best);
+  if (interior && kind.movable()) {
+    detail::SlotQuery query;
+    query.self = ball;
+    query.p = p;
+    query.v = v;
+    query.now = time;
+    query.radius = kind.radius;
+    query.species = species.live() == 1 ? nullptr : species.data();
+    query.horizon = kFarFuture;
+    predict_named(query, cx, cy, best);
   } else {
     predict_gathered(ball, cell, interior, best);
   }
@@ -413,18 +421,18 @@ CAROM_ALWAYS_INLINE inline void World::Impl::consider_contact(Event& best, std::
   best = options[detail::earlier(candidate, best, handle_of.data())];
 }
 
-// The interior cell's neighbours of a ball in a world of one kind (each pair's reach is the
-// same): they are only named in the batch, and the kernel reads their slots itself
-// (pair_batch.hpp, solve_slots), without copies of their offsets. The ball itself is named too
-// (counted out again, so that where it sits in its cell's list needs no branch).
-CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(std::uint32_t ball, std::int32_t cx,
-                                                           std::int32_t cy, double reach,
+// The interior cell's neighbours of a movable ball: they are only named in the batch, and the
+// kernel reads their slots itself (pair_batch.hpp, solve_slots), without copies of their offsets.
+// (A movable ball meets every kind; an immovable one only movable ones, the gathered path's test.)
+// The ball itself is in its cell's list: named, and counted out again, so that where it sits in
+// the list needs no branch.
+CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQuery& query,
+                                                           std::int32_t cx, std::int32_t cy,
                                                            Event& best) const {
-  const Vec2 p = balls[ball].position;
-  const Vec2 v = balls[ball].velocity;
+  const std::uint32_t ball = query.self;
   detail::PairBatch batch;
   const auto solve = [&]() CAROM_ALWAYS_INLINE {
-    batch.solve_slots(balls.data(), ball, p, v, time, reach, kFarFuture);
+    batch.solve_slots(balls.data(), query);
     // The earliest by a total order, so the order the pairs are visited in changes nothing.
     for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
       const auto k = static_cast<std::size_t>(std::countr_zero(hits));
@@ -432,9 +440,10 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(std::uint32_t ball, s
     }
     for (std::uint32_t rescales = batch.rescales; rescales != 0; rescales &= rescales - 1) {
       const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
-      const detail::SlotPair pair = detail::slot_pair(balls[batch.other[k]], p, v, time);
-      const detail::Crossing crossing =
-          detail::entry_crossing_rescaled({pair.s, pair.u, reach}, kFarFuture);
+      const BallSlot& other = balls[batch.other[k]];
+      const detail::SlotPair pair = detail::slot_pair(other, query.p, query.v, query.now);
+      const detail::Crossing crossing = detail::entry_crossing_rescaled(
+          {pair.s, pair.u, detail::slot_reach(other, query)}, query.horizon);
       if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
     }
     batch.count = 0;

@@ -17,6 +17,7 @@
 #include "grid.hpp"
 #include "huge_page_allocator.hpp"
 #include "lookahead.hpp"
+#include "pair_batch.hpp"
 #include "save_format.hpp"
 #include "species.hpp"
 #include "wall.hpp"
@@ -196,9 +197,8 @@ struct World::Impl {
   void sort_by_cell();
   void predict(std::uint32_t ball);
   // predict's contacts with the balls around (world_engine.cpp): read from their slots by the
-  // pair kernel (an interior cell of a world of one kind, `reach` the sum of two radii), or
-  // gathered (every case).
-  void predict_named(std::uint32_t ball, std::int32_t cx, std::int32_t cy, double reach,
+  // pair kernel (a movable ball in an interior cell), or gathered (every case).
+  void predict_named(const detail::SlotQuery& query, std::int32_t cx, std::int32_t cy,
                      detail::Event& best) const;
   void predict_gathered(std::uint32_t ball, std::int32_t cell, bool interior,
                         detail::Event& best) const;

@@ -106,44 +106,56 @@ TEST(PairBatch, SolvesEveryPairOneByOneAsTheScalarEntryCrossing) {
 }
 
 // solve_slots (the neighbours read from their slots inside the kernel) against what the world's
-// general path does with the same slots: slot_pair's values pushed, then solve. Every outcome and
-// every time the same, bit for bit, on batches of every size (a neighbour may be named twice),
-// neighbours stored at earlier local times, and magnitudes of every scale.
-void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*, std::uint32_t,
-                                                         Vec2, Vec2, double, double, double)) {
-  std::mt19937_64 random(20261201);
+// general path does with the same slots: slot_pair's values pushed with the sum of the two radii,
+// then solve. Every outcome and every time the same, bit for bit, on batches of every size (a
+// neighbour may be named twice), neighbours stored at earlier local times, magnitudes of every
+// scale, in a world of one kind and in one of several (each neighbour's radius its species').
+void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*,
+                                                         const detail::SlotQuery&),
+                       bool one_kind) {
+  std::mt19937_64 random(one_kind ? 20261201 : 20261202);
   std::uniform_real_distribution<double> earlier(0.0, 3.0);
   constexpr std::uint32_t kSlots = 64;
+  constexpr std::uint32_t kKinds = 5;
   std::vector<detail::BallSlot> slots(kSlots);
+  std::vector<detail::Species> kinds(kKinds);
   detail::PairBatch named;
   detail::PairBatch pushed;
   int hits = 0;
   int rescaled = 0;
   for (int round = 0; round < 4000; ++round) {
     const double now = 5.0;
+    for (detail::Species& kind : kinds) kind.radius = reach(random) * 0.5;
     for (detail::BallSlot& slot : slots) {
       slot.position = {coordinate(random), coordinate(random)};
       slot.velocity = {coordinate(random), coordinate(random)};
       slot.local_time = now - (random() % 4 == 0 ? 0.0 : earlier(random));
-      slot.species = 0;
+      slot.species = one_kind ? 0 : static_cast<std::uint32_t>(random() % kKinds);
     }
-    const auto self = static_cast<std::uint32_t>(random() % kSlots);
-    slots[self].local_time = now;  // prediction's ball is at the world's time
-    const Vec2 p = slots[self].position;
-    const Vec2 v = slots[self].velocity;
-    const double r = reach(random);
-    if (random() % 16 == 0) slots[(self + 1) % kSlots].position = p + Vec2{r * 0.25, 0.0};
+    detail::SlotQuery query;
+    query.self = static_cast<std::uint32_t>(random() % kSlots);
+    slots[query.self].local_time = now;  // prediction's ball is at the world's time
+    query.p = slots[query.self].position;
+    query.v = slots[query.self].velocity;
+    query.now = now;
+    query.radius = kinds[slots[query.self].species].radius;
+    query.species = one_kind ? nullptr : kinds.data();
+    query.horizon = kHorizon;
+    if (random() % 16 == 0) {  // touching already
+      slots[(query.self + 1) % kSlots].position = query.p + Vec2{query.radius * 0.5, 0.0};
+    }
     named.count = 0;
     pushed.count = 0;
     const std::size_t size = 1 + random() % detail::PairBatch::kCapacity;
     while (named.count < size) {
       const auto other = static_cast<std::uint32_t>(random() % kSlots);
-      if (other == self) continue;
+      if (other == query.self) continue;
       named.other[named.count++] = other;
-      const detail::SlotPair pair = detail::slot_pair(slots[other], p, v, now);
-      pushed.push(pair.s, pair.u, r, other);
+      const detail::SlotPair pair = detail::slot_pair(slots[other], query.p, query.v, now);
+      const double other_radius = one_kind ? query.radius : kinds[slots[other].species].radius;
+      pushed.push(pair.s, pair.u, query.radius + other_radius, other);
     }
-    (named.*solver)(slots.data(), self, p, v, now, r, kHorizon);
+    (named.*solver)(slots.data(), query);
     pushed.solve(kHorizon);
     for (std::size_t k = 0; k < size; ++k) {
       const auto expected = pushed.outcome(k);
@@ -155,6 +167,7 @@ void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*
         ++hits;
       }
       if (expected == detail::PairBatch::kRescale) ++rescaled;
+      EXPECT_EQ(detail::slot_reach(slots[named.other[k]], query), pushed.reach[k]);
     }
   }
   EXPECT_GT(hits, 500);
@@ -162,11 +175,16 @@ void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*
 }
 
 TEST(PairBatch, SolvesNamedSlotsAsThePushedPairs) {
-  check_slot_solver(&detail::PairBatch::solve_slots);
+  check_slot_solver(&detail::PairBatch::solve_slots, true);
+}
+
+TEST(PairBatch, SolvesNamedSlotsOfSeveralKindsAsThePushedPairs) {
+  check_slot_solver(&detail::PairBatch::solve_slots, false);
 }
 
 TEST(PairBatch, SolvesNamedSlotsOneByOneAsThePushedPairs) {
-  check_slot_solver(&detail::PairBatch::solve_slots_one_by_one);
+  check_slot_solver(&detail::PairBatch::solve_slots_one_by_one, true);
+  check_slot_solver(&detail::PairBatch::solve_slots_one_by_one, false);
 }
 
 }  // namespace

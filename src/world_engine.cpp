@@ -9,6 +9,7 @@
 
 #include "bowl_bounce.hpp"
 #include "carom/error.hpp"
+#include "cell_exit.hpp"
 #include "circle_crossing.hpp"
 #include "contact_pace.hpp"
 #include "pair_batch.hpp"
@@ -344,30 +345,15 @@ void World::Impl::predict(std::uint32_t ball) {
 
   // Leaving the cell, through the side it moves towards on each axis (x first on a tie). In a
   // box the outermost cells have no outer side to leave through (the grid's exit there is
-  // infinite). Written as selections, not branches: the signs of a ball's velocity are random,
-  // and a mispredicted branch costs more than computing both sides.
+  // infinite).
   const std::int32_t cell = grid.cell_of_ball(ball);
   const std::int32_t cx = grid.column(cell);
   const std::int32_t cy = grid.row(cell);
-  const bool up_x = v.x > 0.0;
-  const bool up_y = v.y > 0.0;
-  const double side_at_x = grid.exit_x(cx, up_x);
-  const double side_at_y = grid.exit_y(cy, up_y);
-  // (& and | on the conditions, and the choices made by indexing pairs of values: GCC turns a ?:
-  // between doubles into a branch. An exit not taken may divide by zero, harmlessly.)
-  const bool leaves_x = (up_x | (v.x < 0.0)) & (std::abs(side_at_x) != kInfinity);
-  const bool leaves_y = (up_y | (v.y < 0.0)) & (std::abs(side_at_y) != kInfinity);
-  const double exit_x[2] = {kInfinity, time + std::max(0.0, (side_at_x - p.x) / v.x)};
-  const double exit_y[2] = {kInfinity, time + std::max(0.0, (side_at_y - p.y) / v.y)};
-  const double exits[2] = {exit_x[leaves_x], exit_y[leaves_y]};
-  const bool through_y = exits[1] < exits[0];
-  best.time = exits[through_y];
+  const detail::CellExit exit =
+      detail::cell_exit(p, v, time, grid.exit_x(cx, v.x > 0.0), grid.exit_y(cy, v.y > 0.0));
+  best.time = exit.time;
   best.kind = EventKind::cell_crossing;
-  // (A ball that leaves through no side keeps the default partner, 0.)
-  const std::uint32_t side_x = (leaves_x & up_x) ? detail::kRight : detail::kLeft;
-  const std::uint32_t side_y = up_y ? detail::kUp : detail::kDown;
-  const std::uint32_t sides[2] = {side_x, side_y};
-  best.partner = sides[through_y];
+  best.partner = exit.side;
 
   // Walls listed in this cell.
   const detail::Species& kind = species[b.species];
@@ -428,9 +414,9 @@ CAROM_ALWAYS_INLINE inline void World::Impl::consider_contact(Event& best, std::
 // the list needs no branch.
 CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQuery& query,
                                                            std::int32_t cx, std::int32_t cy,
-                                                           Event& best) const {
+                                                           Event& best) {
   const std::uint32_t ball = query.self;
-  detail::PairBatch batch;
+  detail::PairBatch& batch = pair_batch;
   const auto solve = [&]() CAROM_ALWAYS_INLINE {
     batch.solve_slots(balls.data(), query);
     // The earliest by a total order, so the order the pairs are visited in changes nothing.

@@ -76,6 +76,10 @@ struct World::Impl {
   double largest_radius = 0.0;       // of every ball ever added (never lowered: cells stay valid)
 
   detail::Grid grid;
+  // Prediction's batch of pairs (predict_named), kept here rather than on the stack: its 2.4 KB
+  // stay in the cache between predictions, and predict's frame needs no realignment to 64 bytes
+  // (75 instructions a collision fewer).
+  detail::PairBatch pair_batch;
   detail::EventQueue queue;
   detail::Lookahead lookahead;  // large worlds' prefetching of the events ahead
 
@@ -199,7 +203,7 @@ struct World::Impl {
   // predict's contacts with the balls around (world_engine.cpp): read from their slots by the
   // pair kernel (a movable ball in an interior cell), or gathered (every case).
   void predict_named(const detail::SlotQuery& query, std::int32_t cx, std::int32_t cy,
-                     detail::Event& best) const;
+                     detail::Event& best);
   void predict_gathered(std::uint32_t ball, std::int32_t cell, bool interior,
                         detail::Event& best) const;
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;

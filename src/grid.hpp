@@ -198,18 +198,20 @@ class Grid {
 inline Grid::BlockHeads Grid::block_heads(std::int32_t cx, std::int32_t cy) const {
   BlockHeads block;
   block.occupied = 0;
-  for (int row = 0; row < 3; ++row) {
-    const std::int32_t* first = &head_[static_cast<std::size_t>(index(cx - 1, cy - 1 + row))];
+  for (std::size_t row = 0; row < 3; ++row) {
+    const std::int32_t* first =
+        &head_[static_cast<std::size_t>(index(cx - 1, cy - 1 + static_cast<std::int32_t>(row)))];
+    const std::size_t at = 4 * row;  // the row's place in heads and occupied
 #if defined(__SSE2__)
     const __m128i heads = _mm_loadu_si128(reinterpret_cast<const __m128i*>(first));
-    _mm_store_si128(reinterpret_cast<__m128i*>(&block.heads[4 * row]), heads);
+    _mm_store_si128(reinterpret_cast<__m128i*>(&block.heads[at]), heads);
     const __m128i empty = _mm_cmpeq_epi32(heads, _mm_set1_epi32(kNoBall));
     const auto empty_bits = static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(empty)));
-    block.occupied |= (~empty_bits & 7U) << (4 * row);
+    block.occupied |= (~empty_bits & 7U) << at;
 #else
-    for (int k = 0; k < 3; ++k) {
-      block.heads[4 * row + k] = first[k];
-      block.occupied |= static_cast<std::uint32_t>(first[k] != kNoBall) << (4 * row + k);
+    for (std::size_t k = 0; k < 3; ++k) {
+      block.heads[at + k] = first[k];
+      block.occupied |= static_cast<std::uint32_t>(first[k] != kNoBall) << (at + k);
     }
 #endif
   }

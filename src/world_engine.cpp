@@ -467,7 +467,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
 }
 
 // Every other case: the edges of the grid (clipped, or wrapped with the minimum image), small
-// periodic grids (every image), worlds of several kinds. Neighbours are gathered into a batch
+// periodic grids (every image), immovable balls. Neighbours are gathered into a batch
 // (offset, relative velocity, sum of radii) whose pairs are solved together (pair_batch.hpp),
 // then each hit considered. The lambdas are inlined by force: each runs several times a
 // prediction, where a call costs as much as its body.

@@ -108,6 +108,28 @@ constexpr std::uint32_t kDeepLookaheadMinBalls = 1u << 18;
 // slice).
 constexpr std::uint32_t kCellByCellMinBalls = 1u << 19;
 
+// Calls visit(first ball) for each list of the 3×3 block around the interior cell (cx, cy), in
+// row-major order. Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3), so the
+// heads are read first and only the occupied lists visited: an empty cell costs a comparison
+// rather than a turn of the loop and a branch that often mispredicts. Worlds of
+// kCellByCellMinBalls balls or more visit all nine, empty ones (kNoBall) too.
+template <typename Visit>
+CAROM_ALWAYS_INLINE inline void for_each_block_list(const detail::Grid& grid,
+                                                    std::size_t live_count, std::int32_t cx,
+                                                    std::int32_t cy, Visit&& visit) {
+  if (live_count >= kCellByCellMinBalls) {
+    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
+      const std::int32_t first = grid.index(cx - 1, row);
+      for (std::int32_t k = 0; k < 3; ++k) visit(grid.first_ball(first + k));
+    }
+    return;
+  }
+  const detail::Grid::BlockHeads block = grid.block_heads(cx, cy);
+  for (std::uint32_t occupied = block.occupied; occupied != 0; occupied &= occupied - 1) {
+    visit(block.heads[std::countr_zero(occupied)]);
+  }
+}
+
 }  // namespace
 
 // ---- the grid -----------------------------------------------------------------------------
@@ -448,20 +470,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
       }
     }
   };
-  if (live_count >= kCellByCellMinBalls) {
-    // (Large worlds: see kCellByCellMinBalls.)
-    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
-      const std::int32_t first = grid.index(cx - 1, row);
-      for (std::int32_t k = 0; k < 3; ++k) name_list(grid.first_ball(first + k));
-    }
-  } else {
-    // Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3): the heads are read
-    // first and only the lists of occupied cells walked, in the same order.
-    const detail::Grid::BlockHeads block = grid.block_heads(cx, cy);
-    for (std::uint32_t occupied = block.occupied; occupied != 0; occupied &= occupied - 1) {
-      name_list(block.heads[std::countr_zero(occupied)]);
-    }
-  }
+  for_each_block_list(grid, live_count, cx, cy, name_list);
   batch.count = count;
   solve();
 }
@@ -541,20 +550,9 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
       periodic && (grid.nx() < kSingleImageMinCells || grid.ny() < kSingleImageMinCells);
   if (few_cells) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Around{}); });
-  } else if (interior && live_count >= kCellByCellMinBalls) {
-    // (Large worlds: see kCellByCellMinBalls.)
-    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
-      const std::int32_t first = grid.index(cx - 1, row);
-      for (std::int32_t k = 0; k < 3; ++k) gather(first + k, Direct{});
-    }
   } else if (interior) {
-    // Most of the nine cells are empty: only the lists of occupied cells are walked, in order,
-    // so that an empty cell costs a comparison rather than a turn of the loop and a branch that
-    // often mispredicts.
-    const detail::Grid::BlockHeads block = grid.block_heads(cx, cy);
-    for (std::uint32_t occupied = block.occupied; occupied != 0; occupied &= occupied - 1) {
-      gather_list(block.heads[std::countr_zero(occupied)], Direct{});
-    }
+    for_each_block_list(grid, live_count, cx, cy,
+                        [&](std::int32_t first) { gather_list(first, Direct{}); });
   } else if (periodic) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Nearest{}); });
   } else {

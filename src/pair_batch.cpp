@@ -141,26 +141,51 @@ __attribute__((target("avx2"), always_inline)) inline __m256d pair_of(const doub
 // solve_slots: four neighbours' slots a step. The positions and velocities of balls a and c are
 // loaded as one vector ([x_a y_a x_c y_c]), those of b and d as another, and an unpack pairs them
 // into [x_a x_b x_c x_d] and [y_a y_b y_c y_d]; then slot_pair's operations, in its order. With
-// kOneKind every reach is radius + radius, else radius + each neighbour's species' radius.
-template <bool kOneKind>
+// kOneKind every reach is radius + radius, else radius + each neighbour's species' radius. With
+// kTwoBalls each lane takes its ball's position, velocity and radius from `first` or `second`
+// by its bit of second_lanes: a selection, so the same operations on the same values.
+template <bool kOneKind, bool kTwoBalls>
 __attribute__((target("avx2"))) void solve_slots_avx2(PairBatch& batch, const BallSlot* slots,
-                                                      const SlotQuery& query) {
+                                                      const SlotQuery& first,
+                                                      const SlotQuery& second,
+                                                      std::uint32_t second_lanes) {
   const std::size_t count = batch.count;
   const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
   // The last group's unused lanes read the ball itself (any slot would do): their outcomes are
   // dropped below.
-  for (std::size_t k = 0; k < kLanes; ++k) batch.other[count + k] = query.self;
-  const __m256d p_x = _mm256_set1_pd(query.p.x);
-  const __m256d p_y = _mm256_set1_pd(query.p.y);
-  const __m256d v_x = _mm256_set1_pd(query.v.x);
-  const __m256d v_y = _mm256_set1_pd(query.v.y);
-  const __m256d at = _mm256_set1_pd(query.now);
-  const __m256d radius = _mm256_set1_pd(query.radius);
-  const __m256d one_reach = _mm256_add_pd(radius, radius);
-  const __m256d limit = _mm256_set1_pd(query.horizon);
+  for (std::size_t k = 0; k < kLanes; ++k) batch.other[count + k] = first.self;
+  const __m256d p_x1 = _mm256_set1_pd(first.p.x);
+  const __m256d p_y1 = _mm256_set1_pd(first.p.y);
+  const __m256d v_x1 = _mm256_set1_pd(first.v.x);
+  const __m256d v_y1 = _mm256_set1_pd(first.v.y);
+  const __m256d radius1 = _mm256_set1_pd(first.radius);
+  const __m256d at = _mm256_set1_pd(first.now);
+  const __m256d limit = _mm256_set1_pd(first.horizon);
+  // The second ball's, and which bit of a group's four of second_lanes is each lane's.
+  const __m256d p_x2 = _mm256_set1_pd(second.p.x);
+  const __m256d p_y2 = _mm256_set1_pd(second.p.y);
+  const __m256d v_x2 = _mm256_set1_pd(second.v.x);
+  const __m256d v_y2 = _mm256_set1_pd(second.v.y);
+  const __m256d radius2 = _mm256_set1_pd(second.radius);
+  const __m256i lane_bits = _mm256_set_epi64x(8, 4, 2, 1);
   std::uint32_t hits = 0;
   std::uint32_t rescales = 0;
   for (std::size_t k = 0; k < padded; k += kLanes) {
+    __m256d p_x = p_x1;
+    __m256d p_y = p_y1;
+    __m256d v_x = v_x1;
+    __m256d v_y = v_y1;
+    __m256d radius = radius1;
+    if constexpr (kTwoBalls) {
+      const __m256i group = _mm256_set1_epi64x(static_cast<long long>(second_lanes >> k));
+      const __m256d of_second =
+          _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(group, lane_bits), lane_bits));
+      p_x = _mm256_blendv_pd(p_x1, p_x2, of_second);
+      p_y = _mm256_blendv_pd(p_y1, p_y2, of_second);
+      v_x = _mm256_blendv_pd(v_x1, v_x2, of_second);
+      v_y = _mm256_blendv_pd(v_y1, v_y2, of_second);
+      radius = _mm256_blendv_pd(radius1, radius2, of_second);
+    }
     const BallSlot& a = slots[batch.other[k]];
     const BallSlot& b = slots[batch.other[k + 1]];
     const BallSlot& c = slots[batch.other[k + 2]];
@@ -178,9 +203,9 @@ __attribute__((target("avx2"))) void solve_slots_avx2(PairBatch& batch, const Ba
         _mm256_add_pd(_mm256_unpacklo_pd(position_ac, position_bd), _mm256_mul_pd(o_vx, elapsed));
     const __m256d o_y =
         _mm256_add_pd(_mm256_unpackhi_pd(position_ac, position_bd), _mm256_mul_pd(o_vy, elapsed));
-    __m256d reach = one_reach;
+    __m256d reach = _mm256_add_pd(radius, radius);
     if constexpr (!kOneKind) {
-      const Species* kinds = query.species;
+      const Species* kinds = first.species;
       reach =
           _mm256_add_pd(radius, _mm256_set_pd(kinds[d.species].radius, kinds[c.species].radius,
                                               kinds[b.species].radius, kinds[a.species].radius));
@@ -225,9 +250,15 @@ void PairBatch::solve_one_by_one(double horizon) {
 }
 
 void PairBatch::solve_slots_one_by_one(const BallSlot* slots, const SlotQuery& query) {
+  solve_slots_of_two_one_by_one(slots, query, query, 0);
+}
+
+void PairBatch::solve_slots_of_two_one_by_one(const BallSlot* slots, const SlotQuery& first,
+                                              const SlotQuery& second, std::uint32_t second_lanes) {
   hits = 0;
   rescales = 0;
   for (std::size_t k = 0; k < count; ++k) {
+    const SlotQuery& query = ((second_lanes >> k) & 1U) != 0 ? second : first;
     const BallSlot& neighbour = slots[other[k]];
     const SlotPair pair = slot_pair(neighbour, query.p, query.v, query.now);
     solve_pair(*this, k, pair.s.x, pair.s.y, pair.u.x, pair.u.y, slot_reach(neighbour, query),
@@ -239,14 +270,29 @@ void PairBatch::solve_slots(const BallSlot* slots, const SlotQuery& query) {
 #ifdef CAROM_PAIR_BATCH_AVX2
   if (kHasAvx2) {
     if (query.species == nullptr) {
-      solve_slots_avx2<true>(*this, slots, query);
+      solve_slots_avx2<true, false>(*this, slots, query, query, 0);
     } else {
-      solve_slots_avx2<false>(*this, slots, query);
+      solve_slots_avx2<false, false>(*this, slots, query, query, 0);
     }
     return;
   }
 #endif
   solve_slots_one_by_one(slots, query);
+}
+
+void PairBatch::solve_slots_of_two(const BallSlot* slots, const SlotQuery& first,
+                                   const SlotQuery& second, std::uint32_t second_lanes) {
+#ifdef CAROM_PAIR_BATCH_AVX2
+  if (kHasAvx2) {
+    if (first.species == nullptr) {
+      solve_slots_avx2<true, true>(*this, slots, first, second, second_lanes);
+    } else {
+      solve_slots_avx2<false, true>(*this, slots, first, second, second_lanes);
+    }
+    return;
+  }
+#endif
+  solve_slots_of_two_one_by_one(slots, first, second, second_lanes);
 }
 
 }  // namespace carom::detail

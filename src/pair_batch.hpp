@@ -93,6 +93,16 @@ struct PairBatch {
   void solve_slots(const BallSlot* slots, const SlotQuery& query);
   // The same, one pair at a time whatever the CPU (for tests).
   void solve_slots_one_by_one(const BallSlot* slots, const SlotQuery& query);
+
+  // The pairs of two balls at once (a contact's two balls, predicted together so that the
+  // processor overlaps their work): pair k is `second`'s where bit k of `second_lanes` is set,
+  // `first`'s otherwise, and each answer is that ball's solve_slots answer, bit for bit. Both
+  // queries are at one time, with one horizon and one species table (the first's are read).
+  void solve_slots_of_two(const BallSlot* slots, const SlotQuery& first, const SlotQuery& second,
+                          std::uint32_t second_lanes);
+  // The same, one pair at a time whatever the CPU (for tests).
+  void solve_slots_of_two_one_by_one(const BallSlot* slots, const SlotQuery& first,
+                                     const SlotQuery& second, std::uint32_t second_lanes);
 };
 
 // A pair as the world's prediction forms it: the offset of the ball at p from the neighbour's

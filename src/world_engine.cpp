@@ -354,15 +354,15 @@ void World::Impl::repredict_changed(std::uint32_t ball) {
   predict(ball);
 }
 
-// Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
-// in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. The
-// other ball's slot is left alone: this one's covers their pair (docs/world.md, "One event per
-// ball").
-void World::Impl::predict(std::uint32_t ball) {
+// predict's first part: the earliest of leaving the cell and the walls listed in it, into
+// `best`; the ball as the pair kernel asks for it, into `query`; and whether the balls around
+// take the named path (a movable ball in an interior cell).
+CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball, Event& best,
+                                                              detail::SlotQuery& query,
+                                                              PredictionCell& where) const {
   const BallSlot& b = balls[ball];
   const Vec2 p = b.position;
   const Vec2 v = b.velocity;
-  Event best;
   best.owner = ball;
 
   // Leaving the cell, through the side it moves towards on each axis (x first on a tie). In a
@@ -392,27 +392,99 @@ void World::Impl::predict(std::uint32_t ball) {
     if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
   }
 
-  // Balls in the neighbouring cells. Away from the grid's edges the 3×3 block is three runs of
-  // three cells and, in a periodic world, no difference needs the minimum image: neighbours lie
-  // within two cells, under half a period once the grid has five cells per axis (so skipping it
-  // changes no bit). A movable ball there takes the named path; everything else the gathered
-  // one, which computes the same pairs the same way.
-  const bool interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
-                        grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
-  if (interior && kind.movable()) {
-    detail::SlotQuery query;
-    query.self = ball;
-    query.p = p;
-    query.v = v;
-    query.now = time;
-    query.radius = kind.radius;
-    query.species = species.live() == 1 ? nullptr : species.data();
-    query.horizon = kFarFuture;
-    predict_named(query, cx, cy, best);
+  // Balls in the neighbouring cells, next. Away from the grid's edges the 3×3 block is three
+  // runs of three cells and, in a periodic world, no difference needs the minimum image:
+  // neighbours lie within two cells, under half a period once the grid has five cells per axis
+  // (so skipping it changes no bit). A movable ball there takes the named path; everything else
+  // the gathered one, which computes the same pairs the same way.
+  where.cell = cell;
+  where.cx = cx;
+  where.cy = cy;
+  where.interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
+                   grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
+  query.self = ball;
+  query.p = p;
+  query.v = v;
+  query.now = time;
+  query.radius = kind.radius;
+  query.species = species.live() == 1 ? nullptr : species.data();
+  query.horizon = kFarFuture;
+  return where.interior && kind.movable();
+}
+
+// predict's second part, for a ball that start_prediction found.
+CAROM_ALWAYS_INLINE inline void World::Impl::finish_prediction(bool named, Event& best,
+                                                               const detail::SlotQuery& query,
+                                                               const PredictionCell& where) {
+  if (named) {
+    predict_named(query, where.cx, where.cy, best);
   } else {
-    predict_gathered(ball, cell, interior, best);
+    predict_gathered(query.self, where.cell, where.interior, best);
   }
-  queue.set(ball, best);
+  queue.set(query.self, best);
+}
+
+// Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
+// in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. The
+// other ball's slot is left alone: this one's covers their pair (docs/world.md, "One event per
+// ball").
+void World::Impl::predict(std::uint32_t ball) {
+  Event best;
+  detail::SlotQuery query;
+  PredictionCell where;
+  const bool named = start_prediction(ball, best, query, where);
+  finish_prediction(named, best, query, where);
+}
+
+// A contact's two balls, each as predict would, i's slot set first. Where both take the named
+// path their neighbours go into one batch, solved by one kernel call: the two predictions are
+// independent, and so the processor overlaps their chains of loads and arithmetic
+// (docs/performance.md, sixteenth slice).
+void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
+  Event best_i;
+  Event best_j;
+  detail::SlotQuery query_i;
+  detail::SlotQuery query_j;
+  PredictionCell where_i;
+  PredictionCell where_j;
+  const bool named_i = start_prediction(i, best_i, query_i, where_i);
+  const bool named_j = start_prediction(j, best_j, query_j, where_j);
+  if (!named_i || !named_j) {
+    finish_prediction(named_i, best_i, query_i, where_i);
+    finish_prediction(named_j, best_j, query_j, where_j);
+    return;
+  }
+  detail::PairBatch& batch = pair_batch;
+  std::size_t count = 0;
+  std::uint32_t second_lanes = 0;  // bit k: lane k is j's
+  const auto solve = [&]() CAROM_ALWAYS_INLINE {
+    batch.count = count;
+    batch.solve_slots_of_two(balls.data(), query_i, query_j, second_lanes);
+    take_hits(batch.hits & ~second_lanes, batch.rescales & ~second_lanes, query_i, best_i);
+    take_hits(batch.hits & second_lanes, batch.rescales & second_lanes, query_j, best_j);
+    batch.count = 0;
+    count = 0;
+    second_lanes = 0;
+  };
+  // As predict_named names one ball's neighbours, into lanes marked as the ball's.
+  std::uint32_t self = i;
+  std::uint32_t lane_owner = 0;
+  const auto name_list = [&](std::int32_t first_ball) CAROM_ALWAYS_INLINE {
+    for (std::int32_t n = first_ball; n != detail::kNoBall;
+         n = grid.next_ball(static_cast<std::uint32_t>(n))) {
+      batch.other[count] = static_cast<std::uint32_t>(n);
+      second_lanes |= lane_owner << count;
+      count += static_cast<std::size_t>(static_cast<std::uint32_t>(n) != self);
+      if (count == detail::PairBatch::kCapacity) solve();
+    }
+  };
+  for_each_block_list(grid, live_count, where_i.cx, where_i.cy, name_list);
+  self = j;
+  lane_owner = 1;
+  for_each_block_list(grid, live_count, where_j.cx, where_j.cy, name_list);
+  solve();
+  queue.set(i, best_i);
+  queue.set(j, best_j);
 }
 
 // Keeps the earlier of `best` and a contact with `other` at `t` from now. Selected, not branched
@@ -429,6 +501,27 @@ CAROM_ALWAYS_INLINE inline void World::Impl::consider_contact(Event& best, std::
   best = options[detail::earlier(candidate, best, handle_of.data())];
 }
 
+// Considers a batch's answers for one ball: its pairs that hit (at times from now), and those
+// outside the exact range, solved again by the scalar rescaled path. The earliest by a total
+// order, so the order the pairs are visited in changes nothing.
+CAROM_ALWAYS_INLINE inline void World::Impl::take_hits(std::uint32_t hits, std::uint32_t rescales,
+                                                       const detail::SlotQuery& query,
+                                                       Event& best) const {
+  const detail::PairBatch& batch = pair_batch;
+  for (; hits != 0; hits &= hits - 1) {
+    const auto k = static_cast<std::size_t>(std::countr_zero(hits));
+    consider_contact(best, batch.other[k], batch.t[k]);
+  }
+  for (; rescales != 0; rescales &= rescales - 1) {
+    const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
+    const BallSlot& other = balls[batch.other[k]];
+    const detail::SlotPair pair = detail::slot_pair(other, query.p, query.v, query.now);
+    const detail::Crossing crossing = detail::entry_crossing_rescaled(
+        {pair.s, pair.u, detail::slot_reach(other, query)}, query.horizon);
+    if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
+  }
+}
+
 // The interior cell's neighbours of a movable ball: they are only named in the batch, and the
 // kernel reads their slots itself (pair_batch.hpp, solve_slots), without copies of their offsets.
 // (A movable ball meets every kind; an immovable one only movable ones, the gathered path's test.)
@@ -441,19 +534,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
   detail::PairBatch& batch = pair_batch;
   const auto solve = [&]() CAROM_ALWAYS_INLINE {
     batch.solve_slots(balls.data(), query);
-    // The earliest by a total order, so the order the pairs are visited in changes nothing.
-    for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
-      const auto k = static_cast<std::size_t>(std::countr_zero(hits));
-      consider_contact(best, batch.other[k], batch.t[k]);
-    }
-    for (std::uint32_t rescales = batch.rescales; rescales != 0; rescales &= rescales - 1) {
-      const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
-      const BallSlot& other = balls[batch.other[k]];
-      const detail::SlotPair pair = detail::slot_pair(other, query.p, query.v, query.now);
-      const detail::Crossing crossing = detail::entry_crossing_rescaled(
-          {pair.s, pair.u, detail::slot_reach(other, query)}, query.horizon);
-      if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
-    }
+    take_hits(batch.hits, batch.rescales, query, best);
     batch.count = 0;
   };
   // (The count in a local: GCC keeps batch.count in memory, stored and loaded at every name.)
@@ -794,8 +875,7 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   }
   ++a.version;
   ++b.version;
-  predict(i);
-  predict(j);
+  predict_both(i, j);
   return resolved;
 }
 

@@ -200,10 +200,25 @@ struct World::Impl {
   // Renumbers the slots cell by cell (docs/world.md, "Memory order"); changes no result.
   void sort_by_cell();
   void predict(std::uint32_t ball);
+  // predict for a contact's two balls, i's slot set first (world_engine.cpp).
+  void predict_both(std::uint32_t i, std::uint32_t j);
+  // predict's two parts (world_engine.cpp): the cell's exit and walls, then the balls around.
+  struct PredictionCell {
+    std::int32_t cell;
+    std::int32_t cx;
+    std::int32_t cy;
+    bool interior;  // away from the grid's edges: no minimum image needed
+  };
+  bool start_prediction(std::uint32_t ball, detail::Event& best, detail::SlotQuery& query,
+                        PredictionCell& where) const;
+  void finish_prediction(bool named, detail::Event& best, const detail::SlotQuery& query,
+                         const PredictionCell& where);
   // predict's contacts with the balls around (world_engine.cpp): read from their slots by the
   // pair kernel (a movable ball in an interior cell), or gathered (every case).
   void predict_named(const detail::SlotQuery& query, std::int32_t cx, std::int32_t cy,
                      detail::Event& best);
+  void take_hits(std::uint32_t hits, std::uint32_t rescales, const detail::SlotQuery& query,
+                 detail::Event& best) const;
   void predict_gathered(std::uint32_t ball, std::int32_t cell, bool interior,
                         detail::Event& best) const;
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;

@@ -187,5 +187,91 @@ TEST(PairBatch, SolvesNamedSlotsOneByOneAsThePushedPairs) {
   check_slot_solver(&detail::PairBatch::solve_slots_one_by_one, false);
 }
 
+// solve_slots_of_two (a contact's two balls in one batch) against push + solve with each lane's
+// own ball: lanes of either ball in any order (a random mask), so that groups of four mix the
+// two, on batches of every size, with one kind and with several, bit for bit.
+void check_two_ball_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*,
+                                                                  const detail::SlotQuery&,
+                                                                  const detail::SlotQuery&,
+                                                                  std::uint32_t),
+                                bool one_kind) {
+  std::mt19937_64 random(one_kind ? 20261203 : 20261204);
+  std::uniform_real_distribution<double> earlier(0.0, 3.0);
+  constexpr std::uint32_t kSlots = 64;
+  constexpr std::uint32_t kKinds = 5;
+  std::vector<detail::BallSlot> slots(kSlots);
+  std::vector<detail::Species> kinds(kKinds);
+  detail::PairBatch named;
+  detail::PairBatch pushed;
+  int hits[2] = {0, 0};
+  int rescaled = 0;
+  for (int round = 0; round < 4000; ++round) {
+    const double now = 5.0;
+    for (detail::Species& kind : kinds) kind.radius = reach(random) * 0.5;
+    for (detail::BallSlot& slot : slots) {
+      slot.position = {coordinate(random), coordinate(random)};
+      slot.velocity = {coordinate(random), coordinate(random)};
+      slot.local_time = now - (random() % 4 == 0 ? 0.0 : earlier(random));
+      slot.species = one_kind ? 0 : static_cast<std::uint32_t>(random() % kKinds);
+    }
+    detail::SlotQuery queries[2];
+    queries[0].self = static_cast<std::uint32_t>(random() % kSlots);
+    queries[1].self = (queries[0].self + 1 + random() % (kSlots - 1)) % kSlots;
+    for (detail::SlotQuery& query : queries) {
+      slots[query.self].local_time = now;  // prediction's balls are at the world's time
+      query.p = slots[query.self].position;
+      query.v = slots[query.self].velocity;
+      query.now = now;
+      query.radius = kinds[slots[query.self].species].radius;
+      query.species = one_kind ? nullptr : kinds.data();
+      query.horizon = kHorizon;
+    }
+    named.count = 0;
+    pushed.count = 0;
+    std::uint32_t second_lanes = 0;
+    const std::size_t size = 1 + random() % detail::PairBatch::kCapacity;
+    while (named.count < size) {
+      const auto owner = static_cast<std::size_t>(random() % 2);
+      const detail::SlotQuery& query = queries[owner];
+      const auto other = static_cast<std::uint32_t>(random() % kSlots);
+      if (other == query.self) continue;
+      second_lanes |= static_cast<std::uint32_t>(owner) << named.count;
+      named.other[named.count++] = other;
+      const detail::SlotPair pair = detail::slot_pair(slots[other], query.p, query.v, now);
+      pushed.push(pair.s, pair.u, detail::slot_reach(slots[other], query), other);
+    }
+    (named.*solver)(slots.data(), queries[0], queries[1], second_lanes);
+    pushed.solve(kHorizon);
+    for (std::size_t k = 0; k < size; ++k) {
+      const auto expected = pushed.outcome(k);
+      ASSERT_EQ(named.outcome(k), expected) << "round " << round << ", pair " << k;
+      if (expected == detail::PairBatch::kHit) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(named.t[k]),
+                  std::bit_cast<std::uint64_t>(pushed.t[k]))
+            << "round " << round << ", pair " << k;
+        ++hits[(second_lanes >> k) & 1U];
+      }
+      if (expected == detail::PairBatch::kRescale) ++rescaled;
+    }
+  }
+  // Both balls' lanes hit often, and the rescaled path was reached.
+  EXPECT_GT(hits[0], 250);
+  EXPECT_GT(hits[1], 250);
+  EXPECT_GT(rescaled, 500);
+}
+
+TEST(PairBatch, SolvesTwoBallsNamedSlotsAsEachBallsPushedPairs) {
+  check_two_ball_slot_solver(&detail::PairBatch::solve_slots_of_two, true);
+}
+
+TEST(PairBatch, SolvesTwoBallsNamedSlotsOfSeveralKindsAsEachBallsPushedPairs) {
+  check_two_ball_slot_solver(&detail::PairBatch::solve_slots_of_two, false);
+}
+
+TEST(PairBatch, SolvesTwoBallsNamedSlotsOneByOneAsEachBallsPushedPairs) {
+  check_two_ball_slot_solver(&detail::PairBatch::solve_slots_of_two_one_by_one, true);
+  check_two_ball_slot_solver(&detail::PairBatch::solve_slots_of_two_one_by_one, false);
+}
+
 }  // namespace
 }  // namespace carom

@@ -455,32 +455,34 @@ void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
     return;
   }
   detail::PairBatch& batch = pair_batch;
+  constexpr std::size_t kCapacity = detail::PairBatch::kCapacity;
   std::size_t count = 0;
-  std::uint32_t second_lanes = 0;  // bit k: lane k is j's
+  // The batch's lanes from `split` on are j's: none while i's block is named, all once a full
+  // batch was solved during j's.
+  std::size_t split = kCapacity;
   const auto solve = [&]() CAROM_ALWAYS_INLINE {
+    const std::uint32_t second_lanes = split < kCapacity ? ~0U << split : 0U;
     batch.count = count;
     batch.solve_slots_of_two(balls.data(), query_i, query_j, second_lanes);
     take_hits(batch.hits & ~second_lanes, batch.rescales & ~second_lanes, query_i, best_i);
     take_hits(batch.hits & second_lanes, batch.rescales & second_lanes, query_j, best_j);
     batch.count = 0;
     count = 0;
-    second_lanes = 0;
+    split = split < kCapacity ? 0 : kCapacity;
   };
-  // As predict_named names one ball's neighbours, into lanes marked as the ball's.
+  // As predict_named names one ball's neighbours.
   std::uint32_t self = i;
-  std::uint32_t lane_owner = 0;
   const auto name_list = [&](std::int32_t first_ball) CAROM_ALWAYS_INLINE {
     for (std::int32_t n = first_ball; n != detail::kNoBall;
          n = grid.next_ball(static_cast<std::uint32_t>(n))) {
       batch.other[count] = static_cast<std::uint32_t>(n);
-      second_lanes |= lane_owner << count;
       count += static_cast<std::size_t>(static_cast<std::uint32_t>(n) != self);
-      if (count == detail::PairBatch::kCapacity) solve();
+      if (count == kCapacity) solve();
     }
   };
   for_each_block_list(grid, live_count, where_i.cx, where_i.cy, name_list);
   self = j;
-  lane_owner = 1;
+  split = count;
   for_each_block_list(grid, live_count, where_j.cx, where_j.cy, name_list);
   solve();
   queue.set(i, best_i);

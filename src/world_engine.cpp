@@ -130,6 +130,26 @@ CAROM_ALWAYS_INLINE inline void for_each_block_list(const detail::Grid& grid,
   }
 }
 
+// Names in `names`, from `count` on, the balls filed in the 3×3 block around the interior cell
+// (cx, cy), all but `self`, and calls solve() (which empties the batch, count included) whenever
+// the batch is full. The ball itself is in its cell's list: named, and counted out again, so that
+// where it sits in the list needs no branch. (The count is the caller's local: GCC keeps a
+// batch's count in memory, stored and loaded at every name.)
+template <typename Solve>
+CAROM_ALWAYS_INLINE inline void name_block(const detail::Grid& grid, std::size_t live_count,
+                                           std::int32_t cx, std::int32_t cy, std::uint32_t self,
+                                           std::uint32_t* names, std::size_t& count,
+                                           Solve&& solve) {
+  for_each_block_list(grid, live_count, cx, cy, [&](std::int32_t first) CAROM_ALWAYS_INLINE {
+    for (std::int32_t j = first; j != detail::kNoBall;
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      names[count] = static_cast<std::uint32_t>(j);
+      count += static_cast<std::size_t>(static_cast<std::uint32_t>(j) != self);
+      if (count == detail::PairBatch::kCapacity) solve();
+    }
+  });
+}
+
 }  // namespace
 
 // ---- the grid -----------------------------------------------------------------------------
@@ -470,20 +490,9 @@ void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
     count = 0;
     split = split < kCapacity ? 0 : kCapacity;
   };
-  // As predict_named names one ball's neighbours.
-  std::uint32_t self = i;
-  const auto name_list = [&](std::int32_t first_ball) CAROM_ALWAYS_INLINE {
-    for (std::int32_t n = first_ball; n != detail::kNoBall;
-         n = grid.next_ball(static_cast<std::uint32_t>(n))) {
-      batch.other[count] = static_cast<std::uint32_t>(n);
-      count += static_cast<std::size_t>(static_cast<std::uint32_t>(n) != self);
-      if (count == kCapacity) solve();
-    }
-  };
-  for_each_block_list(grid, live_count, where_i.cx, where_i.cy, name_list);
-  self = j;
+  name_block(grid, live_count, where_i.cx, where_i.cy, i, batch.other.data(), count, solve);
   split = count;
-  for_each_block_list(grid, live_count, where_j.cx, where_j.cy, name_list);
+  name_block(grid, live_count, where_j.cx, where_j.cy, j, batch.other.data(), count, solve);
   solve();
   queue.set(i, best_i);
   queue.set(j, best_j);
@@ -527,34 +536,19 @@ CAROM_ALWAYS_INLINE inline void World::Impl::take_hits(std::uint32_t hits, std::
 // The interior cell's neighbours of a movable ball: they are only named in the batch, and the
 // kernel reads their slots itself (pair_batch.hpp, solve_slots), without copies of their offsets.
 // (A movable ball meets every kind; an immovable one only movable ones, the gathered path's test.)
-// The ball itself is in its cell's list: named, and counted out again, so that where it sits in
-// the list needs no branch.
 CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQuery& query,
                                                            std::int32_t cx, std::int32_t cy,
                                                            Event& best) {
-  const std::uint32_t ball = query.self;
   detail::PairBatch& batch = pair_batch;
+  std::size_t count = 0;
   const auto solve = [&]() CAROM_ALWAYS_INLINE {
+    batch.count = count;
     batch.solve_slots(balls.data(), query);
     take_hits(batch.hits, batch.rescales, query, best);
     batch.count = 0;
+    count = 0;
   };
-  // (The count in a local: GCC keeps batch.count in memory, stored and loaded at every name.)
-  std::size_t count = 0;
-  const auto name_list = [&](std::int32_t first) CAROM_ALWAYS_INLINE {
-    for (std::int32_t j = first; j != detail::kNoBall;
-         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
-      batch.other[count] = static_cast<std::uint32_t>(j);
-      count += static_cast<std::size_t>(static_cast<std::uint32_t>(j) != ball);
-      if (count == detail::PairBatch::kCapacity) {
-        batch.count = count;
-        solve();
-        count = 0;
-      }
-    }
-  };
-  for_each_block_list(grid, live_count, cx, cy, name_list);
-  batch.count = count;
+  name_block(grid, live_count, cx, cy, query.self, batch.other.data(), count, solve);
   solve();
 }
 

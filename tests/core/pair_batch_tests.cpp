@@ -105,6 +105,56 @@ TEST(PairBatch, SolvesEveryPairOneByOneAsTheScalarEntryCrossing) {
   check_pair_batch_solver(&detail::PairBatch::solve_one_by_one);
 }
 
+// A round of the slot solvers' checks: kinds of random sizes, and balls of every scale stored at
+// earlier local times (their own or the world's time).
+constexpr std::uint32_t kSlots = 64;
+constexpr std::uint32_t kKinds = 5;
+constexpr double kNow = 5.0;
+void fill_round(std::mt19937_64& random, std::vector<detail::BallSlot>& slots,
+                std::vector<detail::Species>& kinds, bool one_kind) {
+  std::uniform_real_distribution<double> earlier(0.0, 3.0);
+  for (detail::Species& kind : kinds) kind.radius = reach(random) * 0.5;
+  for (detail::BallSlot& slot : slots) {
+    slot.position = {coordinate(random), coordinate(random)};
+    slot.velocity = {coordinate(random), coordinate(random)};
+    slot.local_time = kNow - (random() % 4 == 0 ? 0.0 : earlier(random));
+    slot.species = one_kind ? 0 : static_cast<std::uint32_t>(random() % kKinds);
+  }
+}
+
+// The query of ball `self` as the world's prediction makes it (the ball at the world's time).
+detail::SlotQuery query_of(std::vector<detail::BallSlot>& slots,
+                           const std::vector<detail::Species>& kinds, std::uint32_t self,
+                           bool one_kind) {
+  slots[self].local_time = kNow;
+  detail::SlotQuery query;
+  query.self = self;
+  query.p = slots[self].position;
+  query.v = slots[self].velocity;
+  query.now = kNow;
+  query.radius = kinds[slots[self].species].radius;
+  query.species = one_kind ? nullptr : kinds.data();
+  query.horizon = kHorizon;
+  return query;
+}
+
+// The answers of a named batch's first `size` pairs against a pushed batch's, bit for bit; counts
+// the hits (by the lane's ball: bit k of second_lanes) and the pairs left to the rescaled path.
+void expect_pushed_answers(const detail::PairBatch& named, const detail::PairBatch& pushed,
+                           std::size_t size, int round, std::uint32_t second_lanes, int hits[2],
+                           int& rescaled) {
+  for (std::size_t k = 0; k < size; ++k) {
+    const auto expected = pushed.outcome(k);
+    ASSERT_EQ(named.outcome(k), expected) << "round " << round << ", pair " << k;
+    if (expected == detail::PairBatch::kHit) {
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(named.t[k]), std::bit_cast<std::uint64_t>(pushed.t[k]))
+          << "round " << round << ", pair " << k;
+      ++hits[(second_lanes >> k) & 1U];
+    }
+    if (expected == detail::PairBatch::kRescale) ++rescaled;
+  }
+}
+
 // solve_slots (the neighbours read from their slots inside the kernel) against what the world's
 // general path does with the same slots: slot_pair's values pushed with the sum of the two radii,
 // then solve. Every outcome and every time the same, bit for bit, on batches of every size (a
@@ -114,33 +164,16 @@ void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*
                                                          const detail::SlotQuery&),
                        bool one_kind) {
   std::mt19937_64 random(one_kind ? 20261201 : 20261202);
-  std::uniform_real_distribution<double> earlier(0.0, 3.0);
-  constexpr std::uint32_t kSlots = 64;
-  constexpr std::uint32_t kKinds = 5;
   std::vector<detail::BallSlot> slots(kSlots);
   std::vector<detail::Species> kinds(kKinds);
   detail::PairBatch named;
   detail::PairBatch pushed;
-  int hits = 0;
+  int hits[2] = {0, 0};
   int rescaled = 0;
   for (int round = 0; round < 4000; ++round) {
-    const double now = 5.0;
-    for (detail::Species& kind : kinds) kind.radius = reach(random) * 0.5;
-    for (detail::BallSlot& slot : slots) {
-      slot.position = {coordinate(random), coordinate(random)};
-      slot.velocity = {coordinate(random), coordinate(random)};
-      slot.local_time = now - (random() % 4 == 0 ? 0.0 : earlier(random));
-      slot.species = one_kind ? 0 : static_cast<std::uint32_t>(random() % kKinds);
-    }
-    detail::SlotQuery query;
-    query.self = static_cast<std::uint32_t>(random() % kSlots);
-    slots[query.self].local_time = now;  // prediction's ball is at the world's time
-    query.p = slots[query.self].position;
-    query.v = slots[query.self].velocity;
-    query.now = now;
-    query.radius = kinds[slots[query.self].species].radius;
-    query.species = one_kind ? nullptr : kinds.data();
-    query.horizon = kHorizon;
+    fill_round(random, slots, kinds, one_kind);
+    const detail::SlotQuery query =
+        query_of(slots, kinds, static_cast<std::uint32_t>(random() % kSlots), one_kind);
     if (random() % 16 == 0) {  // touching already
       slots[(query.self + 1) % kSlots].position = query.p + Vec2{query.radius * 0.5, 0.0};
     }
@@ -151,26 +184,18 @@ void check_slot_solver(void (detail::PairBatch::*solver)(const detail::BallSlot*
       const auto other = static_cast<std::uint32_t>(random() % kSlots);
       if (other == query.self) continue;
       named.other[named.count++] = other;
-      const detail::SlotPair pair = detail::slot_pair(slots[other], query.p, query.v, now);
+      const detail::SlotPair pair = detail::slot_pair(slots[other], query.p, query.v, kNow);
       const double other_radius = one_kind ? query.radius : kinds[slots[other].species].radius;
       pushed.push(pair.s, pair.u, query.radius + other_radius, other);
     }
     (named.*solver)(slots.data(), query);
     pushed.solve(kHorizon);
+    expect_pushed_answers(named, pushed, size, round, 0, hits, rescaled);
     for (std::size_t k = 0; k < size; ++k) {
-      const auto expected = pushed.outcome(k);
-      ASSERT_EQ(named.outcome(k), expected) << "round " << round << ", pair " << k;
-      if (expected == detail::PairBatch::kHit) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(named.t[k]),
-                  std::bit_cast<std::uint64_t>(pushed.t[k]))
-            << "round " << round << ", pair " << k;
-        ++hits;
-      }
-      if (expected == detail::PairBatch::kRescale) ++rescaled;
       EXPECT_EQ(detail::slot_reach(slots[named.other[k]], query), pushed.reach[k]);
     }
   }
-  EXPECT_GT(hits, 500);
+  EXPECT_GT(hits[0], 500);
   EXPECT_GT(rescaled, 500);
 }
 
@@ -196,9 +221,6 @@ void check_two_ball_slot_solver(void (detail::PairBatch::*solver)(const detail::
                                                                   std::uint32_t),
                                 bool one_kind) {
   std::mt19937_64 random(one_kind ? 20261203 : 20261204);
-  std::uniform_real_distribution<double> earlier(0.0, 3.0);
-  constexpr std::uint32_t kSlots = 64;
-  constexpr std::uint32_t kKinds = 5;
   std::vector<detail::BallSlot> slots(kSlots);
   std::vector<detail::Species> kinds(kKinds);
   detail::PairBatch named;
@@ -206,26 +228,11 @@ void check_two_ball_slot_solver(void (detail::PairBatch::*solver)(const detail::
   int hits[2] = {0, 0};
   int rescaled = 0;
   for (int round = 0; round < 4000; ++round) {
-    const double now = 5.0;
-    for (detail::Species& kind : kinds) kind.radius = reach(random) * 0.5;
-    for (detail::BallSlot& slot : slots) {
-      slot.position = {coordinate(random), coordinate(random)};
-      slot.velocity = {coordinate(random), coordinate(random)};
-      slot.local_time = now - (random() % 4 == 0 ? 0.0 : earlier(random));
-      slot.species = one_kind ? 0 : static_cast<std::uint32_t>(random() % kKinds);
-    }
-    detail::SlotQuery queries[2];
-    queries[0].self = static_cast<std::uint32_t>(random() % kSlots);
-    queries[1].self = (queries[0].self + 1 + random() % (kSlots - 1)) % kSlots;
-    for (detail::SlotQuery& query : queries) {
-      slots[query.self].local_time = now;  // prediction's balls are at the world's time
-      query.p = slots[query.self].position;
-      query.v = slots[query.self].velocity;
-      query.now = now;
-      query.radius = kinds[slots[query.self].species].radius;
-      query.species = one_kind ? nullptr : kinds.data();
-      query.horizon = kHorizon;
-    }
+    fill_round(random, slots, kinds, one_kind);
+    const auto first = static_cast<std::uint32_t>(random() % kSlots);
+    const auto second = static_cast<std::uint32_t>((first + 1 + random() % (kSlots - 1)) % kSlots);
+    const detail::SlotQuery queries[2] = {query_of(slots, kinds, first, one_kind),
+                                          query_of(slots, kinds, second, one_kind)};
     named.count = 0;
     pushed.count = 0;
     std::uint32_t second_lanes = 0;
@@ -237,22 +244,12 @@ void check_two_ball_slot_solver(void (detail::PairBatch::*solver)(const detail::
       if (other == query.self) continue;
       second_lanes |= static_cast<std::uint32_t>(owner) << named.count;
       named.other[named.count++] = other;
-      const detail::SlotPair pair = detail::slot_pair(slots[other], query.p, query.v, now);
+      const detail::SlotPair pair = detail::slot_pair(slots[other], query.p, query.v, kNow);
       pushed.push(pair.s, pair.u, detail::slot_reach(slots[other], query), other);
     }
     (named.*solver)(slots.data(), queries[0], queries[1], second_lanes);
     pushed.solve(kHorizon);
-    for (std::size_t k = 0; k < size; ++k) {
-      const auto expected = pushed.outcome(k);
-      ASSERT_EQ(named.outcome(k), expected) << "round " << round << ", pair " << k;
-      if (expected == detail::PairBatch::kHit) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(named.t[k]),
-                  std::bit_cast<std::uint64_t>(pushed.t[k]))
-            << "round " << round << ", pair " << k;
-        ++hits[(second_lanes >> k) & 1U];
-      }
-      if (expected == detail::PairBatch::kRescale) ++rescaled;
-    }
+    expect_pushed_answers(named, pushed, size, round, second_lanes, hits, rescaled);
   }
   // Both balls' lanes hit often, and the rescaled path was reached.
   EXPECT_GT(hits[0], 250);

@@ -266,33 +266,36 @@ void PairBatch::solve_slots_of_two_one_by_one(const BallSlot* slots, const SlotQ
   }
 }
 
-void PairBatch::solve_slots(const BallSlot* slots, const SlotQuery& query) {
+namespace {
+
+// solve_slots and solve_slots_of_two: the AVX2 kernel for one or two balls where the CPU has it,
+// for a world of one kind or several; else one pair at a time (which the second ball's lanes,
+// none for one ball, only select between).
+template <bool kTwoBalls>
+void solve_named(PairBatch& batch, const BallSlot* slots, const SlotQuery& first,
+                 const SlotQuery& second, std::uint32_t second_lanes) {
 #ifdef CAROM_PAIR_BATCH_AVX2
   if (kHasAvx2) {
-    if (query.species == nullptr) {
-      solve_slots_avx2<true, false>(*this, slots, query, query, 0);
+    if (first.species == nullptr) {
+      solve_slots_avx2<true, kTwoBalls>(batch, slots, first, second, second_lanes);
     } else {
-      solve_slots_avx2<false, false>(*this, slots, query, query, 0);
+      solve_slots_avx2<false, kTwoBalls>(batch, slots, first, second, second_lanes);
     }
     return;
   }
 #endif
-  solve_slots_one_by_one(slots, query);
+  batch.solve_slots_of_two_one_by_one(slots, first, second, second_lanes);
+}
+
+}  // namespace
+
+void PairBatch::solve_slots(const BallSlot* slots, const SlotQuery& query) {
+  solve_named<false>(*this, slots, query, query, 0);
 }
 
 void PairBatch::solve_slots_of_two(const BallSlot* slots, const SlotQuery& first,
                                    const SlotQuery& second, std::uint32_t second_lanes) {
-#ifdef CAROM_PAIR_BATCH_AVX2
-  if (kHasAvx2) {
-    if (first.species == nullptr) {
-      solve_slots_avx2<true, true>(*this, slots, first, second, second_lanes);
-    } else {
-      solve_slots_avx2<false, true>(*this, slots, first, second, second_lanes);
-    }
-    return;
-  }
-#endif
-  solve_slots_of_two_one_by_one(slots, first, second, second_lanes);
+  solve_named<true>(*this, slots, first, second, second_lanes);
 }
 
 }  // namespace carom::detail

@@ -8,10 +8,15 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "bench_goals.hpp"
 #include "bench_report.hpp"
+#include "child_process.hpp"
 #include "exit_codes.hpp"
 #include "hard_disk_setup.hpp"
 #include "machine_info.hpp"
@@ -47,6 +52,7 @@ struct BenchOptions {
   std::string seed = "1";
   std::string repeat = "1";
   bool json = false;
+  bool goals = false;
 };
 
 struct BenchSettings {
@@ -136,8 +142,8 @@ std::uint64_t peak_resident_bytes() {
   return static_cast<std::uint64_t>(usage.ru_maxrss) * kBytesPerKiB;
 }
 
-int run(const BenchOptions& options) {
-  const BenchSettings settings = parse(options);
+// Runs the gas of `settings` in this process: its figures, exactly as `carom bench` reports them.
+BenchOutcome measure(const BenchSettings& settings) {
   BenchOutcome outcome;
   outcome.n = settings.layout.n;
   outcome.eta = settings.layout.eta;
@@ -183,12 +189,59 @@ int run(const BenchOptions& options) {
   const double total_mass = static_cast<double>(outcome.n) * kDiskMass;
   outcome.momentum_drift =
       length(momentum_after - momentum_before) / std::sqrt(2.0 * total_mass * energy_before);
+  return outcome;
+}
 
-  if (outcome.collisions != settings.collisions * settings.repeats) {
-    std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
-              << settings.collisions * settings.repeats << " collisions asked for\n";
-    return kExitFailure;
+// Whether the gas resolved every collision asked for; says which it did not where it did not.
+bool complete(const BenchOutcome& outcome, const BenchSettings& settings) {
+  if (outcome.collisions == settings.collisions * settings.repeats) return true;
+  std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
+            << settings.collisions * settings.repeats << " collisions asked for\n";
+  return false;
+}
+
+// --goals: each gas of the plan in a process of its own (its memory figure is that process's
+// peak), then the verdicts.
+int run_goals(const BenchOptions& options) {
+  std::vector<nlohmann::ordered_json> benches;
+  std::vector<GasFigures> gases;
+  const std::vector<GoalGas> plan = goal_plan();
+  for (std::size_t k = 0; k < plan.size(); ++k) {
+    const GoalGas& gas = plan[k];
+    BenchOptions one = options;
+    one.n = std::to_string(gas.n);
+    one.eta = readable(gas.eta);
+    one.collisions_per_ball = readable(gas.collisions_per_ball);
+    one.repeat = std::to_string(gas.repeats);
+    const BenchSettings settings = parse(one);
+    if (!options.json) {
+      std::cerr << "carom bench --goals: gas " << k + 1 << " of " << plan.size() << ", " << one.n
+                << " disks at eta " << one.eta << '\n';
+    }
+    const std::string out = output_of_child([&settings] {
+      const BenchOutcome outcome = measure(settings);
+      if (!complete(outcome, settings)) throw std::runtime_error("the gas was not timed whole");
+      return bench_json(outcome).dump();
+    });
+    benches.push_back(nlohmann::ordered_json::parse(out));
+    gases.push_back(gas_figures(benches.back()));
   }
+  const std::vector<GoalVerdict> verdicts = judge_goals(gases);
+  if (options.json) {
+    std::cout << goals_json(benches, verdicts).dump() << '\n';
+  } else {
+    std::cout << goals_text(
+        benches, verdicts,
+        build_and_machine_text(CAROM_CLI_BUILD_TYPE, CAROM_CLI_COMPILER, describe_machine()));
+  }
+  return kExitSuccess;
+}
+
+int run(const BenchOptions& options) {
+  if (options.goals) return run_goals(options);
+  const BenchSettings settings = parse(options);
+  const BenchOutcome outcome = measure(settings);
+  if (!complete(outcome, settings)) return kExitFailure;
   if (options.json) {
     std::cout << bench_json(outcome).dump() << '\n';
   } else {
@@ -224,20 +277,28 @@ Command add_bench_command(CLI::App& app) {
       "Examples:\n"
       "  carom bench --n 10000 --eta 0.3 --collisions-per-ball 10\n"
       "  carom bench --n 100000 --eta 0.6 --collisions-per-ball 5 --seed 7 --json\n"
-      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5");
+      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5\n"
+      "  carom bench --goals\n\n"
+      "--goals runs, for each packing fraction (0.3, then 0.6), 10^4 disks (K 20, R 5),\n"
+      "10^5 (K 10, R 5), 10^6 (K 2, R 3) and 10^4 again, each in a process of its own,\n"
+      "and judges the world's goals on this host: at least 2.5 M collisions/s at 10^4\n"
+      "and 1.5 M at 10^5 (the median of the timed runs, 10^4's two gases pooled), 10^6\n"
+      "at most twice 10^4's median cost a collision, at most 128 bytes a ball at 10^6.\n"
+      "About a minute; --seed and --equilibrate apply to every gas. The exit status\n"
+      "is 0 whether or not the goals are met (the verdicts are in the output).");
 
   auto options = std::make_shared<BenchOptions>();
-  bench->add_option("--n", options->n, "Number of disks, at least 2")
-      ->type_name("N")
-      ->capture_default_str();
-  bench->add_option("--eta", options->eta, "Packing fraction, in (0, 0.9069)")
-      ->type_name("ETA")
-      ->capture_default_str();
-  bench
-      ->add_option("--collisions-per-ball", options->collisions_per_ball,
-                   "Timed collisions per disk (K*N in all, rounded), > 0")
-      ->type_name("K")
-      ->capture_default_str();
+  CLI::Option* n = bench->add_option("--n", options->n, "Number of disks, at least 2")
+                       ->type_name("N")
+                       ->capture_default_str();
+  CLI::Option* eta = bench->add_option("--eta", options->eta, "Packing fraction, in (0, 0.9069)")
+                         ->type_name("ETA")
+                         ->capture_default_str();
+  CLI::Option* per_ball = bench
+                              ->add_option("--collisions-per-ball", options->collisions_per_ball,
+                                           "Timed collisions per disk (K*N in all, rounded), > 0")
+                              ->type_name("K")
+                              ->capture_default_str();
   bench
       ->add_option("--equilibrate", options->equilibrate,
                    "Untimed collisions per disk before the timed run, >= 0")
@@ -246,12 +307,20 @@ Command add_bench_command(CLI::App& app) {
   bench->add_option("--seed", options->seed, "Seed of the velocities' generator")
       ->type_name("S")
       ->capture_default_str();
-  bench
-      ->add_option("--repeat", options->repeat,
-                   "Timed runs of K*N collisions each, one after another, >= 1")
-      ->type_name("R")
-      ->capture_default_str();
+  CLI::Option* repeat =
+      bench
+          ->add_option("--repeat", options->repeat,
+                       "Timed runs of K*N collisions each, one after another, >= 1")
+          ->type_name("R")
+          ->capture_default_str();
   bench->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
+  bench
+      ->add_flag("--goals", options->goals,
+                 "Run the gases of the world's speed and memory goals and judge each goal")
+      ->excludes(n)
+      ->excludes(eta)
+      ->excludes(per_ball)
+      ->excludes(repeat);
 
   return {bench, [options] { return run(*options); }};
 }

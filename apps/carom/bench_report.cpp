@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "readable_number.hpp"
 
@@ -30,12 +31,17 @@ std::vector<double> BenchOutcome::repetition_nanoseconds_per_collision() const {
   return out;
 }
 
+double median_of(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
+}
+
 double BenchOutcome::median_nanoseconds_per_collision() const {
-  std::vector<double> sorted = repetition_nanoseconds_per_collision();
-  if (sorted.empty()) return nanoseconds_per_collision();
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t middle = sorted.size() / 2;
-  return sorted.size() % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+  const std::vector<double> each = repetition_nanoseconds_per_collision();
+  if (each.empty()) return nanoseconds_per_collision();
+  return median_of(each);
 }
 
 double BenchOutcome::best_nanoseconds_per_collision() const {
@@ -71,11 +77,17 @@ std::string bench_text(const BenchOutcome& o) {
   out += fmt::format("  drift over the timed run{}: energy {}, momentum {} (relative)\n",
                      o.repetitions.size() > 1 ? "s" : "", readable(o.energy_drift),
                      readable(o.momentum_drift));
-  out += fmt::format("  build: {}, {}\n", o.build_type.empty() ? "(no build type)" : o.build_type,
-                     o.compiler);
-  out += fmt::format("  machine: {}, {} logical CPUs; caches L1d {}, L2 {}, L3 {}\n", o.machine.cpu,
-                     o.machine.logical_cpus, cache_text(o.machine.l1d_cache_bytes),
-                     cache_text(o.machine.l2_cache_bytes), cache_text(o.machine.l3_cache_bytes));
+  out += build_and_machine_text(o.build_type, o.compiler, o.machine);
+  return out;
+}
+
+std::string build_and_machine_text(const std::string& build_type, const std::string& compiler,
+                                   const MachineInfo& machine) {
+  std::string out = fmt::format("  build: {}, {}\n",
+                                build_type.empty() ? "(no build type)" : build_type, compiler);
+  out += fmt::format("  machine: {}, {} logical CPUs; caches L1d {}, L2 {}, L3 {}\n", machine.cpu,
+                     machine.logical_cpus, cache_text(machine.l1d_cache_bytes),
+                     cache_text(machine.l2_cache_bytes), cache_text(machine.l3_cache_bytes));
   return out;
 }
 

@@ -1,0 +1,215 @@
+// `carom bench --goals`: the plan of gases, the verdicts their figures give (each limit on both
+// sides), the reports, and the child process each gas runs in. The gases themselves take about
+// a minute, so the whole verb is run by hand (docs/performance.md), not here.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench_goals.hpp"
+#include "child_process.hpp"
+#include "run_tool.hpp"
+
+namespace carom::cli::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+GasFigures gas(std::uint64_t n, double eta, std::vector<double> nanoseconds,
+               double bytes_per_ball = 116.0) {
+  return {n, eta, std::move(nanoseconds), bytes_per_ball};
+}
+
+// Figures that meet every goal: 10^4 at 300 ns (3.3 M/s), 10^5 at 500 (2 M/s), 10^6 at 550.
+std::vector<GasFigures> all_met() {
+  std::vector<GasFigures> gases;
+  for (const double eta : {0.3, 0.6}) {
+    gases.push_back(gas(10'000, eta, {300, 310, 290}));
+    gases.push_back(gas(100'000, eta, {500, 500, 500}));
+    gases.push_back(gas(1'000'000, eta, {550, 560, 540}));
+  }
+  return gases;
+}
+
+std::vector<GoalVerdict> judged(const std::vector<GasFigures>& gases) { return judge_goals(gases); }
+
+TEST(BenchGoals, PlanRunsEachDensitysSizesWithTenThousandBeforeAndAfterTheMillion) {
+  const std::vector<GoalGas> plan = goal_plan();
+  ASSERT_EQ(plan.size(), 8U);
+  const std::uint64_t sizes[] = {10'000, 100'000, 1'000'000, 10'000};
+  for (std::size_t k = 0; k < plan.size(); ++k) {
+    EXPECT_EQ(plan[k].n, sizes[k % 4]) << k;
+    EXPECT_EQ(plan[k].eta, k < 4 ? 0.3 : 0.6) << k;
+    EXPECT_GT(plan[k].collisions_per_ball, 0.0);
+    EXPECT_GE(plan[k].repeats, 3U);  // a median of at least three
+  }
+}
+
+TEST(BenchGoals, FiguresThatMeetEveryGoalAreJudgedSo) {
+  const std::vector<GoalVerdict> verdicts = judged(all_met());
+  ASSERT_EQ(verdicts.size(), 7U);
+  for (const GoalVerdict& verdict : verdicts) EXPECT_TRUE(verdict.met) << verdict.goal;
+  EXPECT_THAT(verdicts[0].goal, HasSubstr("2.5 M collisions/s at 10^4, eta 0.3"));
+  EXPECT_THAT(verdicts[3].goal, HasSubstr("1.5 M collisions/s at 10^5, eta 0.6"));
+  EXPECT_THAT(verdicts[4].goal, HasSubstr("10^6's cost <= 2 x 10^4's, eta 0.3"));
+  EXPECT_THAT(verdicts[6].goal, HasSubstr("128 bytes a ball"));
+  EXPECT_DOUBLE_EQ(verdicts[0].value, 1e3 / 300.0);  // M/s of the median
+  EXPECT_DOUBLE_EQ(verdicts[4].value, 550.0 / 300.0);
+}
+
+TEST(BenchGoals, TheRateGoalsHoldAtTheirLimitAndFailJustPastIt) {
+  std::vector<GasFigures> gases = all_met();
+  gases[0].nanoseconds = {400, 400, 400};  // exactly 2.5 M/s
+  gases[4].nanoseconds = {1e3 / 1.5};      // 10^5 at eta 0.6, exactly 1.5 M/s
+  std::vector<GoalVerdict> verdicts = judged(gases);
+  EXPECT_TRUE(verdicts[0].met);
+  EXPECT_TRUE(verdicts[3].met);
+  gases[0].nanoseconds = {401, 399, 402};  // median 401: 2.494 M/s
+  gases[4].nanoseconds = {670};
+  verdicts = judged(gases);
+  EXPECT_FALSE(verdicts[0].met);
+  EXPECT_FALSE(verdicts[3].met);
+  EXPECT_TRUE(verdicts[1].met);  // the other gases are untouched
+  EXPECT_TRUE(verdicts[2].met);
+}
+
+TEST(BenchGoals, TenThousandsRunsArePooledAcrossItsGasesForItsRateAndTheRatio) {
+  std::vector<GasFigures> gases = all_met();
+  gases[0].nanoseconds = {380, 390, 395};
+  gases.push_back(gas(10'000, 0.3, {420, 430, 440}));  // the run after 10^6, slower
+  const std::vector<GoalVerdict> verdicts = judged(gases);
+  // Six runs pooled: the median is the mean of 395 and 420.
+  EXPECT_DOUBLE_EQ(verdicts[0].value, 1e3 / 407.5);
+  EXPECT_DOUBLE_EQ(verdicts[4].value, 550.0 / 407.5);
+  EXPECT_THAT(verdicts[0].measured, HasSubstr("of 6 runs"));
+}
+
+TEST(BenchGoals, TheMillionMayCostTwiceTenThousandButNoMore) {
+  std::vector<GasFigures> gases = all_met();
+  gases[2].nanoseconds = {600, 600, 600};  // eta 0.3: exactly 2 × 300
+  gases[5].nanoseconds = {601, 590, 700};  // eta 0.6: 601 / 300
+  const std::vector<GoalVerdict> verdicts = judged(gases);
+  EXPECT_TRUE(verdicts[4].met);
+  EXPECT_FALSE(verdicts[5].met);
+  EXPECT_THAT(verdicts[5].measured, HasSubstr("601"));
+}
+
+TEST(BenchGoals, MemoryIsTheLargerOfTheMillionsFiguresAndSmallerWorldsDoNotCount) {
+  std::vector<GasFigures> gases = all_met();
+  gases[0].bytes_per_ball = 200.0;  // 10^4: fixed allocations, not judged
+  gases[2].bytes_per_ball = 128.0;  // the limit itself
+  std::vector<GoalVerdict> verdicts = judged(gases);
+  EXPECT_TRUE(verdicts[6].met);
+  EXPECT_DOUBLE_EQ(verdicts[6].value, 128.0);
+  gases[5].bytes_per_ball = 128.5;
+  verdicts = judged(gases);
+  EXPECT_FALSE(verdicts[6].met);
+  EXPECT_DOUBLE_EQ(verdicts[6].value, 128.5);
+}
+
+TEST(BenchGoals, AMissingGasIsNamed) {
+  std::vector<GasFigures> gases = all_met();
+  gases.erase(gases.begin() + 4);  // 10^5 at eta 0.6
+  EXPECT_THAT([&] { (void)judged(gases); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("10^5 disks at eta 0.6")));
+}
+
+TEST(BenchGoals, ReadsABenchObjectAndNamesTheFieldItLacks) {
+  const nlohmann::json bench = {{"n", 10000},
+                                {"eta", 0.3},
+                                {"repetition_nanoseconds_per_collision", {410.0, 420.5}},
+                                {"bytes_per_ball", 158.5}};
+  const GasFigures figures = gas_figures(bench);
+  EXPECT_EQ(figures.n, 10000U);
+  EXPECT_EQ(figures.eta, 0.3);
+  EXPECT_EQ(figures.nanoseconds, (std::vector<double>{410.0, 420.5}));
+  EXPECT_EQ(figures.bytes_per_ball, 158.5);
+  nlohmann::json lacking = bench;
+  lacking.erase("bytes_per_ball");
+  EXPECT_THAT([&] { (void)gas_figures(lacking); },
+              ::testing::ThrowsMessage<std::invalid_argument>(HasSubstr("\"bytes_per_ball\"")));
+  nlohmann::json wrong = bench;
+  wrong["n"] = "many";
+  EXPECT_THROW((void)gas_figures(wrong), std::invalid_argument);
+}
+
+std::vector<nlohmann::ordered_json> benches_of(const std::vector<GasFigures>& gases) {
+  std::vector<nlohmann::ordered_json> out;
+  for (const GasFigures& g : gases) {
+    out.push_back({{"n", g.n},
+                   {"eta", g.eta},
+                   {"repetition_nanoseconds_per_collision", g.nanoseconds},
+                   {"bytes_per_ball", g.bytes_per_ball}});
+  }
+  return out;
+}
+
+TEST(BenchGoals, ReportsSayWhichGoalsAreMet) {
+  std::vector<GasFigures> gases = all_met();
+  gases[2].nanoseconds = {900, 900, 900};  // 3 × 10^4's cost
+  const auto benches = benches_of(gases);
+  const std::vector<GoalVerdict> verdicts = judged(gases);
+
+  const std::string text = goals_text(benches, verdicts, "  machine: test\n");
+  EXPECT_THAT(text, HasSubstr("10^6, eta 0.3"));
+  EXPECT_THAT(text, HasSubstr("NO   3 x"));
+  EXPECT_THAT(text, HasSubstr("6 of 7 goals met"));
+  EXPECT_THAT(text, HasSubstr("machine: test"));
+
+  const nlohmann::ordered_json report = goals_json(benches, verdicts);
+  EXPECT_EQ(report["gases"].size(), gases.size());
+  ASSERT_EQ(report["goals"].size(), 7U);
+  EXPECT_EQ(report["goals"][4]["met"], false);
+  EXPECT_EQ(report["goals"][4]["value"], 3.0);
+  EXPECT_EQ(report["goals"][4]["limit"], 2.0);
+  EXPECT_EQ(report["all_met"], false);
+  EXPECT_EQ(goals_json(benches_of(all_met()), judged(all_met()))["all_met"], true);
+}
+
+TEST(ChildProcess, ReturnsWhatTheWorkReturnedHoweverLong) {
+  EXPECT_EQ(output_of_child([] { return std::string("measured"); }), "measured");
+  // More than a pipe holds at once (64 KiB on Linux): the parent reads while the child writes.
+  const std::string long_text(300'000, 'x');
+  EXPECT_EQ(output_of_child([&] { return long_text; }), long_text);
+}
+
+TEST(ChildProcess, TheChildsMemoryIsItsOwn) {
+  int value = 1;
+  (void)output_of_child([&] {
+    value = 2;
+    return std::string();
+  });
+  EXPECT_EQ(value, 1);
+}
+
+TEST(ChildProcess, AThrowingOrKilledChildIsAnError) {
+  EXPECT_THAT(
+      [] { (void)output_of_child([]() -> std::string { throw std::runtime_error("no"); }); },
+      ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("failed")));
+  EXPECT_THAT(
+      [] {
+        (void)output_of_child([]() -> std::string {
+          std::raise(SIGKILL);
+          return "unreachable";
+        });
+      },
+      ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("signal 9")));
+}
+
+TEST(BenchGoalsTool, GoalsTakeNoGasOfTheirOwn) {
+  for (const char* option : {"--n", "--eta", "--collisions-per-ball", "--repeat"}) {
+    const ToolRun run = run_carom({"bench", "--goals", option, "5"});
+    EXPECT_EQ(run.exit_code, 2) << option;
+    EXPECT_THAT(run.err, HasSubstr("--goals")) << option;
+    EXPECT_THAT(run.err, HasSubstr(option)) << option;
+    EXPECT_EQ(run.out, "") << option;
+  }
+}
+
+}  // namespace
+}  // namespace carom::cli::test

@@ -9,7 +9,6 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -192,37 +191,29 @@ BenchOutcome measure(const BenchSettings& settings) {
   return outcome;
 }
 
-// Whether the gas resolved every collision asked for; says which it did not where it did not.
-bool complete(const BenchOutcome& outcome, const BenchSettings& settings) {
-  if (outcome.collisions == settings.collisions * settings.repeats) return true;
-  std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
-            << settings.collisions * settings.repeats << " collisions asked for\n";
-  return false;
-}
-
-// --goals: each gas of the plan in a process of its own (its memory figure is that process's
-// peak), then the verdicts.
+// --goals: each gas of the plan as `carom bench ... --json` in a process of its own (its memory
+// figure is then that process's peak, as when it is run alone), then the verdicts.
 int run_goals(const BenchOptions& options) {
+  // This very program (Linux): the same build measures every gas.
+  static const std::string kThisProgram = "/proc/self/exe";
   std::vector<nlohmann::ordered_json> benches;
   std::vector<GasFigures> gases;
   const std::vector<GoalGas> plan = goal_plan();
   for (std::size_t k = 0; k < plan.size(); ++k) {
-    const GoalGas& gas = plan[k];
     BenchOptions one = options;
-    one.n = std::to_string(gas.n);
-    one.eta = readable(gas.eta);
-    one.collisions_per_ball = readable(gas.collisions_per_ball);
-    one.repeat = std::to_string(gas.repeats);
-    const BenchSettings settings = parse(one);
+    one.n = std::to_string(plan[k].n);
+    one.eta = readable(plan[k].eta);
+    one.collisions_per_ball = readable(plan[k].collisions_per_ball);
+    one.repeat = std::to_string(plan[k].repeats);
+    (void)parse(one);  // --seed and --equilibrate are refused here, before any gas runs
     if (!options.json) {
       std::cerr << "carom bench --goals: gas " << k + 1 << " of " << plan.size() << ", " << one.n
                 << " disks at eta " << one.eta << '\n';
     }
-    const std::string out = output_of_child([&settings] {
-      const BenchOutcome outcome = measure(settings);
-      if (!complete(outcome, settings)) throw std::runtime_error("the gas was not timed whole");
-      return bench_json(outcome).dump();
-    });
+    const std::string out = output_of_program(
+        kThisProgram,
+        {"bench", "--n", one.n, "--eta", one.eta, "--collisions-per-ball", one.collisions_per_ball,
+         "--repeat", one.repeat, "--seed", one.seed, "--equilibrate", one.equilibrate, "--json"});
     benches.push_back(nlohmann::ordered_json::parse(out));
     gases.push_back(gas_figures(benches.back()));
   }
@@ -241,7 +232,11 @@ int run(const BenchOptions& options) {
   if (options.goals) return run_goals(options);
   const BenchSettings settings = parse(options);
   const BenchOutcome outcome = measure(settings);
-  if (!complete(outcome, settings)) return kExitFailure;
+  if (outcome.collisions != settings.collisions * settings.repeats) {
+    std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
+              << settings.collisions * settings.repeats << " collisions asked for\n";
+    return kExitFailure;
+  }
   if (options.json) {
     std::cout << bench_json(outcome).dump() << '\n';
   } else {

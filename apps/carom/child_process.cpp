@@ -7,7 +7,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <iostream>
 #include <stdexcept>
 
@@ -15,41 +14,35 @@ namespace carom::cli {
 
 namespace {
 
-// Writes all of text to fd; false when it cannot.
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t wrote = ::write(fd, text.data() + done, text.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) return false;
-    done += static_cast<std::size_t>(wrote);
-  }
-  return true;
+[[noreturn]] void fail(const std::string& what) {
+  throw std::runtime_error(what + ": " + std::strerror(errno));
 }
 
-[[noreturn]] void run_child(int fd, const std::function<std::string()>& work) {
-  int status = 1;
-  try {
-    status = write_all(fd, work()) ? 0 : 1;
-  } catch (const std::exception& error) {
-    std::cerr << "carom: error: " << error.what() << '\n';
-  } catch (...) {
-    std::cerr << "carom: error: an unknown exception\n";
-  }
-  std::cerr.flush();
-  ::close(fd);
-  // _exit, not exit: the parent's atexit handlers and stream buffers are the parent's.
-  ::_exit(status);
+// In the child: standard output to the pipe, then the program. Only async-signal-safe calls
+// between fork and exec.
+[[noreturn]] void become(const std::string& program, char* const argv[], int read_end,
+                         int write_end) {
+  ::close(read_end);
+  if (::dup2(write_end, STDOUT_FILENO) < 0) ::_exit(127);
+  ::close(write_end);
+  ::execv(program.c_str(), argv);
+  static constexpr char kMessage[] = "carom: error: cannot run the measuring program\n";
+  (void)!::write(STDERR_FILENO, kMessage, sizeof kMessage - 1);
+  ::_exit(127);
 }
 
 }  // namespace
 
-std::string output_of_child(const std::function<std::string()>& work) {
+std::string output_of_program(const std::string& program, const std::vector<std::string>& args) {
+  std::vector<std::string> words{program};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+
   int fds[2];
-  if (::pipe(fds) != 0) {
-    throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
-  }
-  // Whatever the parent has buffered would otherwise be written twice, once by each.
+  if (::pipe(fds) != 0) fail("cannot make a pipe");
+  // Whatever this process has buffered would otherwise be written by both.
   std::cout.flush();
   std::cerr.flush();
   std::fflush(nullptr);
@@ -58,12 +51,10 @@ std::string output_of_child(const std::function<std::string()>& work) {
     const int error = errno;
     ::close(fds[0]);
     ::close(fds[1]);
-    throw std::runtime_error(std::string("cannot start a process: ") + std::strerror(error));
+    errno = error;
+    fail("cannot start " + program);
   }
-  if (child == 0) {
-    ::close(fds[0]);
-    run_child(fds[1], work);
-  }
+  if (child == 0) become(program, argv.data(), fds[0], fds[1]);
   ::close(fds[1]);
   std::string out;
   char buffer[4096];
@@ -76,16 +67,14 @@ std::string output_of_child(const std::function<std::string()>& work) {
   ::close(fds[0]);
   int status = 0;
   while (::waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) {
-      throw std::runtime_error(std::string("cannot wait for a process: ") + std::strerror(errno));
-    }
+    if (errno != EINTR) fail("cannot wait for " + program);
   }
   if (WIFSIGNALED(status)) {
-    throw std::runtime_error("the measuring process was killed by signal " +
-                             std::to_string(WTERMSIG(status)));
+    throw std::runtime_error(program + " was killed by signal " + std::to_string(WTERMSIG(status)));
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    throw std::runtime_error("the measuring process failed (its message is above)");
+    throw std::runtime_error(program + " failed with exit status " +
+                             std::to_string(WEXITSTATUS(status)) + " (its message is above)");
   }
   return out;
 }

@@ -1,17 +1,18 @@
-// carom tool: work done in a child process, for figures that a process keeps for its whole life
-// (`carom bench --goals` measures each gas's memory as its own process's peak resident set, which
-// never falls, so gases run one after another in one process would hide each other's).
+// carom tool: another program run to its end, its standard output kept. `carom bench --goals` runs
+// each gas as `carom bench ... --json` in a process of its own: a process's peak resident set
+// never falls, so gases run one after another in one process would hide each other's memory.
 #pragma once
 
-#include <functional>
 #include <string>
+#include <vector>
 
 namespace carom::cli {
 
-// Runs `work` in a child process (fork) and returns the text it returned. Throws
-// std::runtime_error when the child cannot be started, or ends other than by returning (it threw:
-// its message is then written to standard error by the child; it was killed: the signal named).
-// POSIX only; the caller must have no other threads running.
-[[nodiscard]] std::string output_of_child(const std::function<std::string()>& work);
+// Runs `program` (a path, not searched for) with `args` (after the program's name), its standard
+// input and error the caller's, and returns everything it wrote to standard output. Throws
+// std::runtime_error when it cannot be started, exits with a status other than 0, or is killed
+// (the signal named). POSIX only.
+[[nodiscard]] std::string output_of_program(const std::string& program,
+                                            const std::vector<std::string>& args);
 
 }  // namespace carom::cli

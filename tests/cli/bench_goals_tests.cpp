@@ -4,7 +4,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -171,34 +170,31 @@ TEST(BenchGoals, ReportsSayWhichGoalsAreMet) {
   EXPECT_EQ(goals_json(benches_of(all_met()), judged(all_met()))["all_met"], true);
 }
 
-TEST(ChildProcess, ReturnsWhatTheWorkReturnedHoweverLong) {
-  EXPECT_EQ(output_of_child([] { return std::string("measured"); }), "measured");
+TEST(ChildProcess, ReturnsWhatTheProgramWroteHoweverLong) {
+  EXPECT_EQ(output_of_program("/bin/sh", {"-c", "printf 'measured %s' \"$0\"", "gas"}),
+            "measured gas");
   // More than a pipe holds at once (64 KiB on Linux): the parent reads while the child writes.
-  const std::string long_text(300'000, 'x');
-  EXPECT_EQ(output_of_child([&] { return long_text; }), long_text);
+  const std::string out =
+      output_of_program("/bin/sh", {"-c",
+                                    "i=0; while [ $i -lt 3000 ]; do printf '%0100d' $i; "
+                                    "i=$((i + 1)); done"});
+  ASSERT_EQ(out.size(), 300'000U);
+  EXPECT_EQ(out.substr(out.size() - 4), "2999");
 }
 
-TEST(ChildProcess, TheChildsMemoryIsItsOwn) {
-  int value = 1;
-  (void)output_of_child([&] {
-    value = 2;
-    return std::string();
-  });
-  EXPECT_EQ(value, 1);
-}
-
-TEST(ChildProcess, AThrowingOrKilledChildIsAnError) {
-  EXPECT_THAT(
-      [] { (void)output_of_child([]() -> std::string { throw std::runtime_error("no"); }); },
-      ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("failed")));
+TEST(ChildProcess, AFailingOrKilledOrMissingProgramIsAnError) {
   EXPECT_THAT(
       [] {
-        (void)output_of_child([]() -> std::string {
-          std::raise(SIGKILL);
-          return "unreachable";
-        });
+        (void)output_of_program("/bin/sh", {"-c", "exit 3"});
+      },
+      ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("exit status 3")));
+  EXPECT_THAT(
+      [] {
+        (void)output_of_program("/bin/sh", {"-c", "kill -9 $$"});
       },
       ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("signal 9")));
+  EXPECT_THAT([] { (void)output_of_program("/nonexistent/carom", {}); },
+              ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("exit status 127")));
 }
 
 TEST(BenchGoalsTool, GoalsTakeNoGasOfTheirOwn) {
@@ -209,6 +205,14 @@ TEST(BenchGoalsTool, GoalsTakeNoGasOfTheirOwn) {
     EXPECT_THAT(run.err, HasSubstr(option)) << option;
     EXPECT_EQ(run.out, "") << option;
   }
+}
+
+TEST(BenchGoalsTool, ABadSeedIsRefusedBeforeAnyGasRuns) {
+  const ToolRun run = run_carom({"bench", "--goals", "--seed", "x"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--seed"));
+  EXPECT_THAT(run.err, ::testing::Not(HasSubstr("gas 1 of")));
+  EXPECT_EQ(run.out, "");
 }
 
 }  // namespace

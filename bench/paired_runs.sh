@@ -3,8 +3,9 @@
 # round: on a shared host whose speed moves by a fifth within minutes (docs/performance.md,
 # fifteenth and sixteenth slices), runs one after the other land in different stretches of its
 # noise, while a pair run together meets the same stretch. Prints each round's ns a collision
-# (the probe's CPU time) and the second build's over the first's, then the median ratio and its
-# quartiles: a change is told from the noise when the quartiles sit on one side of 1.
+# (the probe's CPU time) and the second build's over the first's, then the median and quartiles
+# of the ratios of pairs of rounds (below): a change is told from the noise when the quartiles
+# sit on one side of 1.
 #
 # Usage: bench/paired_runs.sh OLD_PROBE NEW_PROBE N ETA COLLISIONS_PER_BALL ROUNDS
 #   e.g. bench/paired_runs.sh /tmp/old/carom_world_gas_probe \
@@ -63,12 +64,21 @@ while [ "$round" -le "$rounds" ]; do
 done
 
 awk '{ printf "round %d: old %s ns, new %s ns, new/old %.3f\n", NR, $1, $2, $2 / $1 }' "$work/rounds"
-awk '{ printf "%.6f\n", $2 / $1 }' "$work/rounds" | sort -n >"$work/ratios"
-awk -v n="$n" -v eta="$eta" '
+# Rounds 2k-1 and 2k run each build once on each core: the square root of their two ratios
+# cancels a difference in speed between the cores (seen: one core a third slower than the other
+# for minutes, which makes the rounds' ratios alternate between about 0.7 and 1.5). The median
+# and quartiles are given of these pairs' ratios; an odd last round is left out of them.
+awk 'NR % 2 == 1 { r = $2 / $1 } NR % 2 == 0 { printf "%.6f\n", sqrt(r * $2 / $1) }' \
+  "$work/rounds" | sort -n >"$work/ratios"
+awk -v n="$n" -v eta="$eta" -v rounds="$rounds" '
   { r[NR] = $1 }
   END {
-    # Quartiles by the nearest rank: enough to see on which side of 1 the rounds sit.
+    if (NR == 0) {
+      printf "N = %s, eta = %s, 1 round: no pair of rounds to compare (ask for 2 or more)\n", n, eta
+      exit
+    }
+    # Quartiles by the nearest rank: enough to see on which side of 1 the pairs sit.
     q1 = r[int((NR + 3) / 4)]; q2 = r[int((NR + 1) / 2)]; q3 = r[int((3 * NR + 3) / 4)]
-    printf "N = %s, eta = %s, %d rounds: new/old median %.3f, quartiles %.3f and %.3f\n",
-           n, eta, NR, q2, q1, q3
+    printf "N = %s, eta = %s, %d rounds: new/old median %.3f, quartiles %.3f and %.3f (of %d pairs of rounds, each build once on each core)\n",
+           n, eta, rounds, q2, q1, q3, NR
   }' "$work/ratios"

@@ -72,7 +72,7 @@ class EventQueue {
     __builtin_prefetch(&link_prev_[after_it != kNoEvent ? after_it : owner], 1);
   }
   // Asks the cache for what replacing the ball's slot reads (inlined by force, as
-  // Grid::prefetch_for is, for the same reason).
+  // Grid::prefetch_block_heads is, for the same reason).
   [[gnu::always_inline]] void prefetch_slot(std::uint32_t owner) const {
     __builtin_prefetch(&events_[owner]);
     __builtin_prefetch(&places_[owner]);

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "permute.hpp"
-
 namespace carom::detail {
 
 namespace {
@@ -30,7 +28,7 @@ void tabulate_exits(std::vector<double>& exits, double lower, double cell, std::
 }  // namespace
 
 void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic,
-                 bool closed, std::uint32_t ball_capacity, Vec2 hysteresis) {
+                 bool closed, Vec2 hysteresis) {
   lower_ = lower;
   cell_ = cell;
   hysteresis_ = hysteresis;
@@ -46,14 +44,10 @@ void Grid::setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool p
   head_.assign(cells + 1, kNoBall);
   wall_start_.clear();
   wall_ids_.clear();
-  next_.assign(ball_capacity, kNoBall);
-  ball_cell_.assign(ball_capacity, kNoBall);
-}
-
-void Grid::reserve_balls(std::uint32_t capacity) {
-  if (capacity <= next_.size()) return;
-  next_.resize(capacity, kNoBall);
-  ball_cell_.resize(capacity, kNoBall);
+  for (BallSlot& slot : *slots_) {
+    slot.cell_next = kNoBall;
+    slot.cell = kNoBall;
+  }
 }
 
 std::int32_t Grid::column_of(double x) const {
@@ -67,30 +61,33 @@ std::int32_t Grid::row_of(double y) const {
 }
 
 void Grid::reorder(std::span<const std::uint32_t> new_index) {
-  move_to(ball_cell_, new_index);
+  BigVector<BallSlot>& slots = *slots_;
   std::fill(head_.begin(), head_.end(), kNoBall);
   // Backwards, since insert puts a ball first in its cell's list.
   for (auto k = static_cast<std::uint32_t>(new_index.size()); k-- > 0;) {
-    if (ball_cell_[k] != kNoBall) insert(k, ball_cell_[k]);
+    if (slots[k].cell != kNoBall) insert(k, slots[k].cell);
   }
 }
 
 void Grid::insert(std::uint32_t ball, std::int32_t cell) {
-  const auto first = head_[static_cast<std::size_t>(cell)];
-  next_[ball] = first;
+  BallSlot& slot = (*slots_)[ball];
+  slot.cell_next = head_[static_cast<std::size_t>(cell)];
   head_[static_cast<std::size_t>(cell)] = static_cast<std::int32_t>(ball);
-  ball_cell_[ball] = cell;
+  slot.cell = cell;
 }
 
 void Grid::erase(std::uint32_t ball) {
-  const std::int32_t cell = ball_cell_[ball];
+  BigVector<BallSlot>& slots = *slots_;
+  const std::int32_t cell = slots[ball].cell;
   if (cell == kNoBall) return;
   // Singly linked: the predecessor is found by walking the cell's list, which prediction scans
   // anyway (a cell holds about one ball), and saves 4 bytes a ball. The others keep their order.
   std::int32_t* link = &head_[static_cast<std::size_t>(cell)];
-  while (*link != static_cast<std::int32_t>(ball)) link = &next_[static_cast<std::size_t>(*link)];
-  *link = next_[ball];
-  ball_cell_[ball] = kNoBall;
+  while (*link != static_cast<std::int32_t>(ball)) {
+    link = &slots[static_cast<std::size_t>(*link)].cell_next;
+  }
+  *link = slots[ball].cell_next;
+  slots[ball].cell = kNoBall;
 }
 
 void Grid::set_walls(std::span<const Vec2> lower, std::span<const Vec2> upper) {

@@ -1,7 +1,8 @@
 // carom internal: the world's broad phase, a uniform grid of square cells no smaller than the
 // largest ball's diameter, so that two balls in contact are always in the same or neighbouring
-// cells. Balls are kept in intrusive doubly linked lists per cell (no allocation while running);
-// walls are listed in every cell their box, grown by the cell size, overlaps.
+// cells. Balls are kept in intrusive singly linked lists per cell, whose links are in the balls'
+// slots (ball_slot.hpp; no allocation while running); walls are listed in every cell their box,
+// grown by the cell size, overlaps.
 #pragma once
 
 #include <algorithm>
@@ -13,13 +14,12 @@
 #include <emmintrin.h>
 #endif
 
+#include "ball_slot.hpp"
 #include "carom/vec2.hpp"
 #include "fixed_divisor.hpp"
 #include "huge_page_allocator.hpp"
 
 namespace carom::detail {
-
-inline constexpr std::int32_t kNoBall = -1;
 
 class Grid {
  public:
@@ -28,15 +28,13 @@ class Grid {
   // that a ball's centre lies within its cell grown by that much; the cell less twice the
   // hysteresis is what must hold the largest diameter (docs/world.md, "The broad phase").
   // In a closed grid (a box) the outer sides of the outermost cells are never left.
+  // Every ball of the slots (use_slots) is left in no cell.
   void setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic, bool closed,
-             std::uint32_t ball_capacity, Vec2 hysteresis);
-  // Makes room for balls up to index capacity − 1 (new ones in no cell).
-  void reserve_balls(std::uint32_t capacity);
-  // Allocates for `count` balls without adding any (World::reserve).
-  void reserve_capacity(std::uint32_t count) {
-    next_.reserve(count);
-    ball_cell_.reserve(count);
-  }
+             Vec2 hysteresis);
+  // The balls' slots, where the grid keeps each ball's list link and cell (ball_slot.hpp): the
+  // caller keeps the vector alive, at the same address, as long as the grid is used; the grid
+  // never resizes it (a new slot is in no cell).
+  void use_slots(BigVector<BallSlot>& slots) { slots_ = &slots; }
 
   [[nodiscard]] std::int32_t nx() const { return nx_; }
   [[nodiscard]] std::int32_t ny() const { return ny_; }
@@ -81,23 +79,18 @@ class Grid {
   [[nodiscard]] double exit_y(std::int32_t cy, bool upward) const {
     return exits_y_[2 * static_cast<std::size_t>(cy) + upward];
   }
-  // Renumbers the balls as the world re-orders them: ball i becomes ball new_index[i], in the
-  // same cell; each cell's list is rebuilt in ascending order.
+  // After the world has moved its slots (ball i to slot new_index[i], its cell with it): each
+  // cell's list is rebuilt in ascending order.
   void reorder(std::span<const std::uint32_t> new_index);
 
   void insert(std::uint32_t ball, std::int32_t cell);
   void erase(std::uint32_t ball);
-  [[nodiscard]] std::int32_t cell_of_ball(std::uint32_t ball) const { return ball_cell_[ball]; }
+  [[nodiscard]] std::int32_t cell_of_ball(std::uint32_t ball) const { return (*slots_)[ball].cell; }
   [[nodiscard]] std::int32_t first_ball(std::int32_t cell) const {
     return head_[static_cast<std::size_t>(cell)];
   }
-  [[nodiscard]] std::int32_t next_ball(std::uint32_t ball) const { return next_[ball]; }
-  // Asks the cache for the ball's own grid entries (its cell and its list link). Inlined by
-  // force: GCC 12 takes a function that only prefetches for one without effects and drops the
-  // calls to it that it has not inlined by then (a larger version of this one vanished so).
-  [[gnu::always_inline]] void prefetch_for(std::uint32_t ball) const {
-    __builtin_prefetch(&ball_cell_[ball]);
-    __builtin_prefetch(&next_[ball]);
+  [[nodiscard]] std::int32_t next_ball(std::uint32_t ball) const {
+    return (*slots_)[ball].cell_next;
   }
 
   // The list heads of the 3×3 block around the interior cell (cx, cy): row r's three at
@@ -111,16 +104,15 @@ class Grid {
   [[nodiscard]] BlockHeads block_heads(std::int32_t cx, std::int32_t cy) const;
 
   // For the engine's lookahead (world_lookahead.cpp): asks the cache for the list heads of the
-  // 3×3 block around the interior cell (cx, cy), three rows of three, and for a ball's list link.
+  // 3×3 block around the interior cell (cx, cy), three rows of three. (Inlined by force: GCC 12
+  // takes a function that only prefetches for one without effects and drops the calls to it that
+  // it has not inlined by then.)
   [[gnu::always_inline]] void prefetch_block_heads(std::int32_t cx, std::int32_t cy) const {
     for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
       const std::int32_t* first = &head_[static_cast<std::size_t>(index(cx - 1, row))];
       __builtin_prefetch(first);
       __builtin_prefetch(first + 2);  // (a row's 12 bytes may straddle two lines)
     }
-  }
-  [[gnu::always_inline]] void prefetch_link(std::uint32_t ball) const {
-    __builtin_prefetch(&next_[ball]);
   }
 
   // The cells a wall with this bounding box is listed in: columns x0..x1, rows y0..y1.
@@ -184,11 +176,10 @@ class Grid {
   std::int32_t ny_ = 1;
   FixedDivisor rows_{1};  // division by nx_
   bool periodic_ = false;
-  std::vector<double> exits_x_;        // by column: the exits down and up the axis (exit_x)
-  std::vector<double> exits_y_;        // by row
-  BigVector<std::int32_t> head_;       // by cell: first ball, or kNoBall; and one more (above)
-  BigVector<std::int32_t> next_;       // by ball
-  BigVector<std::int32_t> ball_cell_;  // by ball, or kNoBall
+  std::vector<double> exits_x_;           // by column: the exits down and up the axis (exit_x)
+  std::vector<double> exits_y_;           // by row
+  BigVector<std::int32_t> head_;          // by cell: first ball, or kNoBall; and one more (above)
+  BigVector<BallSlot>* slots_ = nullptr;  // each ball's link and cell (use_slots)
   // The cells' wall lists, concatenated (cell c's: wall_ids_[wall_start_[c] .. wall_start_[c+1]]);
   // both empty in a world without walls, so cells then cost only their list head.
   std::vector<std::uint32_t> wall_start_;

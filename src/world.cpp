@@ -182,7 +182,6 @@ BallId World::add_ball(const BallDef& def) {
     w.handle_of.push_back(slot);  // a new slot's handle index is its own
     w.slot_of_handle.push_back(slot);
     if (w.def.collapse_time > 0.0) w.last_contact_times.emplace_back();
-    w.grid.reserve_balls(static_cast<std::uint32_t>(w.balls.size()));
   }
   BallSlot& b = w.balls[slot];
   b.position = position;
@@ -229,7 +228,6 @@ void World::reserve(std::size_t count) {
   w.handle_of.reserve(count);
   w.slot_of_handle.reserve(count);
   if (w.def.collapse_time > 0.0) w.last_contact_times.reserve(count);
-  w.grid.reserve_capacity(static_cast<std::uint32_t>(count));
 }
 
 bool World::contains(BallId id) const noexcept {

@@ -239,7 +239,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   };
   const Vec2 hysteresis{hysteresis_of(cell_size.x), hysteresis_of(cell_size.y)};
   grid.setup(lower, cell_size, nx, ny, def.boundary == Boundary::periodic,
-             def.boundary == Boundary::box, static_cast<std::uint32_t>(balls.size()), hysteresis);
+             def.boundary == Boundary::box, hysteresis);
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (balls[i].alive()) grid.insert(i, grid.cell_of(position_at(i, time)));
   }

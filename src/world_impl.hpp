@@ -55,6 +55,13 @@ struct DragStop {
 }  // namespace detail
 
 struct World::Impl {
+  Impl() { grid.use_slots(balls); }
+  Impl(const Impl&) = delete;  // the grid names `balls` by address
+  Impl& operator=(const Impl&) = delete;
+  Impl(Impl&&) = delete;
+  Impl& operator=(Impl&&) = delete;
+  ~Impl() = default;
+
   WorldDef def;
   // Balls live in slots, which the engine re-orders by grid cell from time to time so that
   // neighbours sit near each other in memory (sort_by_cell). A BallId names a handle index,

@@ -27,11 +27,11 @@ constexpr std::int64_t kMostWalks = 3;
 static_assert(kReach < detail::Lookahead::kCursors);
 constexpr auto kCursors = static_cast<std::size_t>(detail::Lookahead::kCursors);
 
-// Both lines a 48-byte slot may straddle. (Inlined by force, as Grid::prefetch_for is: GCC
-// drops calls to a function whose only effects are prefetches.)
+// A ball's slot, one line with its grid entries (ball_slot.hpp). (Inlined by force, as
+// Grid::prefetch_block_heads is: GCC drops calls to a function whose only effects are
+// prefetches.)
 [[gnu::always_inline]] inline void prefetch_slot(const BallSlot& slot) {
   __builtin_prefetch(&slot);
-  __builtin_prefetch(reinterpret_cast<const char*>(&slot) + sizeof(BallSlot) - 1);
 }
 
 }  // namespace
@@ -54,7 +54,6 @@ void World::Impl::look_ahead() {
 // Stage 0 of an event's ball: its own records.
 [[gnu::always_inline]] inline void World::Impl::lookahead_stage_0(std::uint32_t ball) const {
   prefetch_slot(balls[ball]);
-  grid.prefetch_for(ball);
   queue.prefetch_slot(ball);
 }
 
@@ -69,7 +68,6 @@ void World::Impl::look_ahead() {
   const std::uint32_t partners[2] = {ball, named};
   const std::uint32_t partner = partners[pair];
   prefetch_slot(balls[partner]);
-  grid.prefetch_for(partner);
   queue.prefetch_slot(partner);
   lookahead.partners[lookahead.parity].push_if(partner, pair);
   const std::int32_t cell = grid.cell_of_ball(ball);
@@ -99,7 +97,6 @@ void World::Impl::lookahead_noted() {
     const std::int32_t second = grid.next_ball(first);
     const auto ball = static_cast<std::uint32_t>(second != detail::kNoBall ? second : 0);
     prefetch_slot(balls[ball]);
-    grid.prefetch_link(ball);
   }
   lookahead.first_balls[last].clear();
   // Stage 2: the first balls of the blocks whose heads the last call asked for (the check keeps
@@ -121,7 +118,6 @@ void World::Impl::lookahead_noted() {
   firsts.count = found;
   for (const std::uint32_t first : firsts) {
     prefetch_slot(balls[first]);
-    grid.prefetch_link(first);
   }
   if (!lookahead.deep) firsts.clear();
   lookahead.cells[last].clear();

@@ -359,11 +359,9 @@ void World::Impl::load_payload(ByteReader& in) {
     free_slots.push_back(slot);
   }
 
-  if (grid_valid) {
-    load_grid(in);
-  } else {
-    grid.reserve_balls(slots);  // in no cell: remove_ball's erase then has nothing to do
-  }
+  // Without a grid every ball stays in no cell (a new slot's), so remove_ball's erase has nothing
+  // to do.
+  if (grid_valid) load_grid(in);
   if (events_valid) {
     queue.reset(slots);
     queue.use_handles(handle_of.data());
@@ -419,7 +417,7 @@ void World::Impl::load_grid(ByteReader& in) {
                     "a cell's hysteresis is at least 0 and at most a tenth of the cell");
   }
   grid.setup(lower, cell, nx, ny, def.boundary == Boundary::periodic, def.boundary == Boundary::box,
-             slots, hysteresis);
+             hysteresis);
   const std::int32_t cells = nx * ny;
   std::vector<std::int32_t> cell_of(slots);
   for (std::uint32_t i = 0; i < slots; ++i) {

@@ -1,7 +1,8 @@
 // The world's event queue (src/event_queue.hpp) against a scan of every slot: the event it
 // gives as the earliest is the earliest by the total order of world_event.hpp, whether or not
-// it defers filing events in later buckets (the large worlds' mode), through the years it opens,
-// the events replaced while their filing is deferred, and re-orderings.
+// it defers filing events in later buckets (the large worlds' mode), through the years it opens
+// (finding the pending events by a scan of the slots, or by walking their list where few slots
+// hold one), the events replaced while their filing is deferred, and re-orderings.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,8 +49,9 @@ Event random_event(std::mt19937_64& random, std::uint32_t owner, std::uint32_t s
 }
 
 // Processes `steps` events the way the engine does: take the earliest, re-predict its owner
-// and a few others (some twice, some to "nothing"); checks each earliest against the scan.
-void check_against_scan(bool deferring, std::uint64_t seed) {
+// and a few others (some twice, some to "nothing"); checks each earliest against the scan. Only
+// every `every`-th slot ever holds an event (the rest: balls at rest).
+void check_against_scan(bool deferring, std::uint64_t seed, std::uint32_t every = 1) {
   constexpr std::uint32_t kSlots = 2000;
   constexpr int kSteps = 20000;
   std::mt19937_64 random(seed);
@@ -60,9 +62,12 @@ void check_against_scan(bool deferring, std::uint64_t seed) {
   EventQueue queue;
   queue.reset(kSlots);
   queue.use_handles(handles.data());
-  for (std::uint32_t k = 0; k < kSlots; ++k) queue.set(k, random_event(random, k, kSlots, 0.0));
+  for (std::uint32_t k = 0; k < kSlots; k += every) {
+    queue.set(k, random_event(random, k, kSlots, 0.0));
+  }
   queue.defer_filing(deferring);
   std::uniform_int_distribution<std::uint32_t> pick(0, kSlots - 1);
+  const auto pick_active = [&] { return pick(random) / every * every; };
   for (int step = 0; step < kSteps; ++step) {
     const Event top = queue.top();
     const Event expected = earliest_by_scan(queue, kSlots, handles.data());
@@ -79,7 +84,7 @@ void check_against_scan(bool deferring, std::uint64_t seed) {
     queue.set(top.owner, random_event(random, top.owner, kSlots, now));
     const std::uint32_t others = pick(random) % 4;
     for (std::uint32_t k = 0; k < others; ++k) {
-      const std::uint32_t owner = pick(random);
+      const std::uint32_t owner = pick_active();
       const bool removed = pick(random) % 50 == 0;  // a ball removed: "nothing will happen"
       queue.set(owner, removed ? Event{} : random_event(random, owner, kSlots, now));
       // Replaced again before the next top(): its deferred filing is taken back.
@@ -93,6 +98,14 @@ TEST(EventQueue, EarliestAgreesWithAScanOfEverySlot) { check_against_scan(false,
 TEST(EventQueue, EarliestAgreesWithAScanWhileDeferringFiling) {
   check_against_scan(true, 1);
   check_against_scan(true, 2);
+}
+
+// 100 of 2000 slots hold events, fewer than the share at which a new year scans the slots: it
+// walks the overflow list instead. 300, about the share, for years of either kind.
+TEST(EventQueue, EarliestAgreesWithAScanWhenFewSlotsHoldEvents) {
+  check_against_scan(false, 3, 20);
+  check_against_scan(true, 4, 20);
+  check_against_scan(true, 5, 7);
 }
 
 }  // namespace

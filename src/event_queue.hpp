@@ -36,12 +36,12 @@ class EventQueue {
   // The earliest event in the order of world_event.hpp's `earlier`, or one at +infinity when no
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();
-  // Whether set() defers filing an event that falls in a later bucket until the next top(),
-  // asking the cache for its bucket's list head now and, at that top(), for the link filing it
-  // writes: large worlds' events are filed across the queue's whole year, a miss or two each,
-  // which then overlap the engine's work (docs/world.md, "Looking ahead"). Events at the
-  // current bucket are filed at once, and top() files every deferred one before it opens a
-  // bucket, so the order of events is the same either way.
+  // Whether set() defers filing an event that falls in a later bucket until the second top()
+  // after it, asking the cache for its bucket's list head now and, at the first, for the link
+  // filing it writes: large worlds' events are filed across the queue's whole year, a miss or
+  // two each, which then overlap the engine's work (docs/world.md, "Looking ahead"). Events at
+  // the current bucket are filed at once, and top() files the deferred events of a bucket
+  // before it opens it, so the order of events is the same either way.
   void defer_filing(bool on) noexcept {
     flush_deferred();
     defer_ = on;
@@ -140,6 +140,8 @@ class EventQueue {
   }
   // Files every deferred event (defer_filing).
   void flush_deferred() noexcept;
+  // Files the deferred events that fall in `bucket`, which top() is about to open.
+  void file_deferred_in(std::int64_t bucket) noexcept;
   // Files the deferred events whose list links were asked for at the last top(), and asks for
   // those of the rest.
   void age_deferred() noexcept;

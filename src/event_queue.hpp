@@ -37,9 +37,9 @@ class EventQueue {
   // slot holds a finite time. Not const: it may open the next bucket or year.
   [[nodiscard]] Event top();
   // Whether set() defers filing an event that falls in a later bucket until the second top()
-  // after it, asking the cache for its bucket's list head now and, at the first, for the link
-  // filing it writes: large worlds' events are filed across the queue's whole year, a miss or
-  // two each, which then overlap the engine's work (docs/world.md, "Looking ahead"). Events at
+  // after it, asking the cache for its bucket's list head now: large worlds' events are filed
+  // across the queue's whole year, a miss or two each, which then overlap the engine's work
+  // (docs/world.md, "Looking ahead"). Events at
   // the current bucket are filed at once, and top() files the deferred events of a bucket
   // before it opens it, so the order of events is the same either way.
   void defer_filing(bool on) noexcept {
@@ -142,8 +142,11 @@ class EventQueue {
   void flush_deferred() noexcept;
   // Files the deferred events that fall in `bucket`, which top() is about to open.
   void file_deferred_in(std::int64_t bucket) noexcept;
-  // Files the deferred events whose list links were asked for at the last top(), and asks for
-  // those of the rest.
+  // Files the deferred events set before the last top() (their list heads, asked for by set(),
+  // have had an event's time to come; the back link filing writes into the old head is a store,
+  // which does not hold the engine up). Reading the heads one top() earlier, to ask for those
+  // links, stalled on each (the head asked for a few instructions before): 10⁶ balls ran 4 – 8 %
+  // slower so (docs/performance.md, seventeenth slice).
   void age_deferred() noexcept;
   void file_deferred(std::uint32_t owner) noexcept;
   // Starts a new year from the overflow list; false when no finite event is left.

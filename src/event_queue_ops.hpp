@@ -82,15 +82,7 @@ inline void EventQueue::age_deferred() noexcept {
   // (A removal may have moved a later one among the first ripe_: it is filed a little early.)
   const std::uint32_t ripe = std::min(ripe_, deferred_count_);
   for (std::uint32_t k = 0; k < ripe; ++k) file_deferred(deferred_[k]);
-  for (std::uint32_t k = ripe; k < deferred_count_; ++k) {
-    const std::uint32_t owner = deferred_[k];
-    deferred_[k - ripe] = owner;
-    // Filing writes the present list head's back link (list_push).
-    const auto index =
-        static_cast<std::size_t>(bucket_of(events_[owner].time)) & (buckets_.size() - 1);
-    const std::uint32_t head = buckets_[index];
-    __builtin_prefetch(&link_prev_[head != kNoEvent ? head : owner], 1);
-  }
+  for (std::uint32_t k = ripe; k < deferred_count_; ++k) deferred_[k - ripe] = deferred_[k];
   deferred_count_ -= ripe;
   ripe_ = deferred_count_;
 }

@@ -28,7 +28,10 @@ TEST(GasJson, HasEveryKeyOfTheIssue) {
     EXPECT_TRUE(out.contains(key)) << key;
   }
   EXPECT_EQ(out["n"], 64);
-  EXPECT_DOUBLE_EQ(out["kT"].get<double>(), 1.0);  // the velocities are scaled to kT = 1
+  // The velocities are scaled to kT = 1, which the elastic run keeps to its rounding: a few
+  // thousand contacts move the energy by some 10⁻¹⁵ (the world's conservation tests hold 10⁻¹⁰
+  // over 10⁷), so 10⁻¹² is far above the rounding and far below any real change.
+  EXPECT_NEAR(out["kT"].get<double>(), 1.0, 1e-12);
   EXPECT_GT(out["Z"].get<double>(), 1.0);
   EXPECT_GT(out["collisions"].get<double>(), 0.0);
 }

@@ -182,8 +182,10 @@ inline Event EventQueue::top() {
 
 inline void EventQueue::heap_push(std::uint32_t owner) {
   places_[owner] = Place::heap;
-  heap_.push_back(entry_of(owner));
-  heap_sift_up(static_cast<std::uint32_t>(heap_.size() - 1));
+  const Entry entry = entry_of(owner);
+  heap_.emplace_back();
+  write_entry(heap_.back(), entry);
+  heap_sift_up(static_cast<std::uint32_t>(heap_.size() - 1), entry);
 }
 
 inline void EventQueue::heap_remove(std::uint32_t owner) {
@@ -193,17 +195,18 @@ inline void EventQueue::heap_remove(std::uint32_t owner) {
   places_[owner] = Place::none;
   link_next_[owner] = kNoEvent;
   if (last.owner() == owner) return;
-  heap_[position] = last;
   // The moved entry goes up or down, never both: up only when it is before its new parent.
   if (position > 0 && before(last, heap_[(position - 1) / 2])) {
-    heap_sift_up(position);
+    heap_sift_up(position, last);
   } else {
-    heap_sift_down(position);
+    heap_sift_down(position, last);
   }
 }
 
-inline void EventQueue::heap_sift_up(std::uint32_t position) {
-  const Entry entry = heap_[position];
+// `entry` is the one at `position`, or to go there: passed rather than read back from heap_,
+// where it was just written in 4- and 8-byte parts that a 16-byte read cannot take from the
+// store buffer (a stall of some 15 cycles each time, docs/performance.md, seventeenth slice).
+inline void EventQueue::heap_sift_up(std::uint32_t position, const Entry& entry) {
   while (position > 0) {
     const std::uint32_t parent = (position - 1) / 2;
     if (!before(entry, heap_[parent])) break;
@@ -213,8 +216,7 @@ inline void EventQueue::heap_sift_up(std::uint32_t position) {
   heap_place(position, entry);
 }
 
-inline void EventQueue::heap_sift_down(std::uint32_t position) {
-  const Entry entry = heap_[position];
+inline void EventQueue::heap_sift_down(std::uint32_t position, const Entry& entry) {
   const auto size = static_cast<std::uint32_t>(heap_.size());
   for (;;) {
     const std::uint32_t left = 2 * position + 1;

@@ -45,9 +45,9 @@ class EventQueue {
   // Whether set() defers filing an event that falls in a later bucket until the second top()
   // after it, asking the cache for its bucket's list head now: large worlds' events are filed
   // across the queue's whole year, a miss or two each, which then overlap the engine's work
-  // (docs/world.md, "Looking ahead"). Events at
-  // the current bucket are filed at once, and top() files the deferred events of a bucket
-  // before it opens it, so the order of events is the same either way.
+  // (docs/world.md, "Looking ahead"). Events at the current bucket are filed at once, and top()
+  // files the deferred events of a bucket before it opens it, so the order of events is the same
+  // either way.
   void defer_filing(bool on) noexcept {
     flush_deferred();
     defer_ = on;

@@ -203,9 +203,9 @@ inline void EventQueue::heap_remove(std::uint32_t owner) {
   }
 }
 
-// `entry` is the one at `position`, or to go there: passed rather than read back from heap_,
-// where it was just written in 4- and 8-byte parts that a 16-byte read cannot take from the
-// store buffer (a stall of some 15 cycles each time, docs/performance.md, seventeenth slice).
+// `entry` is the one at `position`, or to go there: passed in registers rather than read back
+// from heap_, where it has just been written (when entries were written in parts, reading one
+// back waited for the parts to reach the cache; docs/performance.md, seventeenth slice).
 inline void EventQueue::heap_sift_up(std::uint32_t position, const Entry& entry) {
   while (position > 0) {
     const std::uint32_t parent = (position - 1) / 2;

@@ -692,11 +692,11 @@ TEST(WorldApi, RunCollisionsWithNothingMovingReturnsZero) {
 
 TEST(WorldApi, StopConditionEndsTheStepRightAfterTheContact) {
   World world = box_of_balls(52, 5, 10.0);
-  const BallId watched = world.balls()[7];
   constexpr WallId kTop = 2;
-  world.set_stop_condition([watched](const ContactEvent& c) {
-    return c.kind == ContactKind::ball_wall && c.a == watched && c.wall == kTop;
-  });
+  // Any ball meeting the top wall: which one comes first depends on roundings that differ from
+  // build to build (one ball chosen beforehand met it within 1000 steps with g++, not with clang).
+  world.set_stop_condition(
+      [](const ContactEvent& c) { return c.kind == ContactKind::ball_wall && c.wall == kTop; });
   bool fired = false;
   for (int s = 0; s < 1000 && !fired; ++s) {
     const double before = world.time();
@@ -708,8 +708,9 @@ TEST(WorldApi, StopConditionEndsTheStepRightAfterTheContact) {
     fired = true;
     ASSERT_FALSE(world.contacts().empty());
     const ContactEvent& last = world.contacts().back();
-    EXPECT_EQ(last.a, watched);
+    EXPECT_EQ(last.kind, ContactKind::ball_wall);
     EXPECT_EQ(last.wall, kTop);
+    const BallId watched = last.a;
     EXPECT_EQ(world.time(), last.time);
     EXPECT_LT(advanced, kStep);
     EXPECT_EQ(world.time(), before + advanced);

@@ -279,8 +279,8 @@ Command add_bench_command(CLI::App& app) {
       "and judges the world's goals on this host: at least 2.5 M collisions/s at 10^4\n"
       "and 1.5 M at 10^5 (the median of the timed runs, 10^4's two gases pooled), 10^6\n"
       "at most twice 10^4's median cost a collision, at most 128 bytes a ball at 10^6.\n"
-      "About a minute; --seed and --equilibrate apply to every gas. The exit status\n"
-      "is 0 whether or not the goals are met (the verdicts are in the output).");
+      "About half a minute; --seed and --equilibrate apply to every gas. The exit\n"
+      "status is 0 whether or not the goals are met (the verdicts are in the output).");
 
   auto options = std::make_shared<BenchOptions>();
   CLI::Option* n = bench->add_option("--n", options->n, "Number of disks, at least 2")

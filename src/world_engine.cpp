@@ -98,8 +98,10 @@ constexpr std::uint64_t kEventsBeforeProof = 64;
 // balls (4 MB) 538 against 498 ns, 66 000 (8 MB) 569 against 605.
 constexpr std::uint32_t kPrefetchMinBalls = 1u << 16;
 // ... and from this many on, their lookahead goes a stage deeper (world_lookahead.cpp): at 10⁶
-// balls (120 MB) 4 – 10 % less time a collision, at 10⁵ (12 MB) 5 % more.
-constexpr std::uint32_t kDeepLookaheadMinBalls = 1u << 18;
+// balls (120 MB) 4 – 10 % less time a collision. Since the seventeenth slice's changes (64-byte
+// slots, the queue's stalls gone) also at 10⁵ (12 MB): paired 0.924 (η = 0.3) and 0.815 (0.6);
+// at 70 000 (8.5 MB) 1.056, still more (docs/performance.md, seventeenth slice).
+constexpr std::uint32_t kDeepLookaheadMinBalls = 90'000;
 // Worlds with at least this many balls walk a prediction's nine cells one by one, not only the
 // occupied ones (predict): their cell heads come from main memory, and branches on them, once
 // predicted, let the processor run ahead to the next cells' loads. Measured on the gas, ns a

@@ -24,7 +24,7 @@ struct alignas(64) BallSlot {
   double local_time = 0.0;
   std::uint32_t species = kNoSpecies;  // kNoSpecies while the slot is free
   std::uint32_t version = 0;           // bumped whenever the trajectory changes
-  // Written by the grid alone (Grid::insert, erase, setup, reorder).
+  // Written by the grid alone (Grid::insert, erase, setup, relist).
   std::int32_t cell_next = kNoBall;  // the next ball in its cell's list
   std::int32_t cell = kNoBall;       // the cell it is listed in
 

@@ -60,11 +60,11 @@ std::int32_t Grid::row_of(double y) const {
   return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
 }
 
-void Grid::reorder(std::span<const std::uint32_t> new_index) {
+void Grid::relist() {
   BigVector<BallSlot>& slots = *slots_;
   std::fill(head_.begin(), head_.end(), kNoBall);
   // Backwards, since insert puts a ball first in its cell's list.
-  for (auto k = static_cast<std::uint32_t>(new_index.size()); k-- > 0;) {
+  for (auto k = static_cast<std::uint32_t>(slots.size()); k-- > 0;) {
     if (slots[k].cell != kNoBall) insert(k, slots[k].cell);
   }
 }

@@ -79,9 +79,9 @@ class Grid {
   [[nodiscard]] double exit_y(std::int32_t cy, bool upward) const {
     return exits_y_[2 * static_cast<std::size_t>(cy) + upward];
   }
-  // After the world has moved its slots (ball i to slot new_index[i], its cell with it): each
-  // cell's list is rebuilt in ascending order.
-  void reorder(std::span<const std::uint32_t> new_index);
+  // Rebuilds every cell's list, in ascending order, from the cells the slots hold: after the
+  // world has re-ordered its slots, each ball's cell moved with it.
+  void relist();
 
   void insert(std::uint32_t ball, std::int32_t cell);
   void erase(std::uint32_t ball);

@@ -337,7 +337,7 @@ void World::Impl::sort_by_cell() {
   detail::move_all_to(new_slot, balls, infos, handle_of);
   if (!last_contact_times.empty()) detail::move_to(last_contact_times, new_slot);
   for (std::uint32_t k = 0; k < slots; ++k) slot_of_handle[handle_of[k]] = k;
-  grid.reorder(new_slot);
+  grid.relist();
   if (events_valid) {
     queue.use_handles(handle_of.data());
     queue.reorder(new_slot);

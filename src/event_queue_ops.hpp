@@ -170,11 +170,17 @@ inline Event EventQueue::top() {
     // every one here, when this was the common path, read their lists' heads a few instructions
     // after asking the cache for them, a stall each at 10⁶ balls).
     file_deferred_in(current_);
+    // The whole list goes to the heap: walked by its links (each read before heap_push reuses
+    // it as the heap position) rather than unlinked ball by ball, whose back links the walk
+    // would read and write for nothing.
     auto& head = buckets_[static_cast<std::size_t>(current_) & (buckets_.size() - 1)];
-    while (head != kNoEvent) {
-      const std::uint32_t owner = head;
-      list_remove(head, owner);
+    std::uint32_t owner = head;
+    head = kNoEvent;
+    while (owner != kNoEvent) {
+      const std::uint32_t next = link_next_[owner];
       heap_push(owner);
+      --outside_heap_;
+      owner = next;
     }
   }
   return unpack(heap_.front().owner());

@@ -448,12 +448,20 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball
 CAROM_ALWAYS_INLINE inline void World::Impl::finish_prediction(bool named, Event& best,
                                                                const detail::SlotQuery& query,
                                                                const PredictionCell& where) {
-  if (named) {
-    predict_named(query, where.cx, where.cy, best);
-  } else {
-    predict_gathered(query.self, where.cell, where.interior, best);
-  }
-  queue.set(query.self, best);
+  const bool found = named ? predict_named(query, where.cx, where.cy, best)
+                           : predict_gathered(query.self, where.cell, where.interior, best);
+  file_prediction(best, found);
+}
+
+// Sets the ball's slot to its prediction `best`; `found` says whether the prediction found a
+// contact with some ball around it, at any time. A crossing keeps that (kClearBehind where none
+// was found): cross_cell then looks only at the cells it brings into reach. Selected, not
+// branched on: the kind is random.
+CAROM_ALWAYS_INLINE inline void World::Impl::file_prediction(Event& best, bool found) {
+  static_assert(detail::kClearBehind == 1);  // (so that !found is the flag: no branch)
+  const bool crossing = best.kind == EventKind::cell_crossing;
+  best.partner_version = crossing ? static_cast<std::uint32_t>(!found) : best.partner_version;
+  queue.set(best.owner, best);
 }
 
 // Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
@@ -492,12 +500,15 @@ void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
   // The batch's lanes from `split` on are j's: none while i's block is named, all once a full
   // batch was solved during j's.
   std::size_t split = kCapacity;
+  bool found_i = false;
+  bool found_j = false;
   const auto solve = [&]() CAROM_ALWAYS_INLINE {
     const std::uint32_t second_lanes = split < kCapacity ? ~0U << split : 0U;
     batch.count = count;
     batch.solve_slots_of_two(balls.data(), query_i, query_j, second_lanes);
-    take_hits(batch.hits & ~second_lanes, batch.rescales & ~second_lanes, query_i, best_i);
-    take_hits(batch.hits & second_lanes, batch.rescales & second_lanes, query_j, best_j);
+    found_i |=
+        take_hits(batch.hits & ~second_lanes, batch.rescales & ~second_lanes, query_i, best_i);
+    found_j |= take_hits(batch.hits & second_lanes, batch.rescales & second_lanes, query_j, best_j);
     batch.count = 0;
     count = 0;
     split = split < kCapacity ? 0 : kCapacity;
@@ -506,8 +517,8 @@ void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
   split = count;
   name_block(grid, live_count, where_j.cx, where_j.cy, j, batch.other.data(), count, solve);
   solve();
-  queue.set(i, best_i);
-  queue.set(j, best_j);
+  file_prediction(best_i, found_i);
+  file_prediction(best_j, found_j);
 }
 
 // Keeps the earlier of `best` and a contact with `other` at `t` from now. Selected, not branched
@@ -527,10 +538,11 @@ CAROM_ALWAYS_INLINE inline void World::Impl::consider_contact(Event& best, std::
 // Considers a batch's answers for one ball: its pairs that hit (at times from now), and those
 // outside the exact range, solved again by the scalar rescaled path. The earliest by a total
 // order, so the order the pairs are visited in changes nothing.
-CAROM_ALWAYS_INLINE inline void World::Impl::take_hits(std::uint32_t hits, std::uint32_t rescales,
+CAROM_ALWAYS_INLINE inline bool World::Impl::take_hits(std::uint32_t hits, std::uint32_t rescales,
                                                        const detail::SlotQuery& query,
                                                        Event& best) const {
   const detail::PairBatch& batch = pair_batch;
+  bool found = hits != 0;
   for (; hits != 0; hits &= hits - 1) {
     const auto k = static_cast<std::size_t>(std::countr_zero(hits));
     consider_contact(best, batch.other[k], batch.t[k]);
@@ -542,26 +554,36 @@ CAROM_ALWAYS_INLINE inline void World::Impl::take_hits(std::uint32_t hits, std::
     const detail::Crossing crossing = detail::entry_crossing_rescaled(
         {pair.s, pair.u, detail::slot_reach(other, query)}, query.horizon);
     if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
+    found |= crossing.found;
   }
+  return found;
 }
 
 // The interior cell's neighbours of a movable ball: they are only named in the batch, and the
 // kernel reads their slots itself (pair_batch.hpp, solve_slots), without copies of their offsets.
 // (A movable ball meets every kind; an immovable one only movable ones, the gathered path's test.)
-CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQuery& query,
+CAROM_ALWAYS_INLINE inline bool World::Impl::predict_named(const detail::SlotQuery& query,
                                                            std::int32_t cx, std::int32_t cy,
                                                            Event& best) {
-  detail::PairBatch& batch = pair_batch;
   std::size_t count = 0;
-  const auto solve = [&]() CAROM_ALWAYS_INLINE {
-    batch.count = count;
-    batch.solve_slots(balls.data(), query);
-    take_hits(batch.hits, batch.rescales, query, best);
-    batch.count = 0;
-    count = 0;
-  };
-  name_block(grid, live_count, cx, cy, query.self, batch.other.data(), count, solve);
+  bool found = false;
+  const auto solve = [&]() CAROM_ALWAYS_INLINE { found |= solve_named(query, count, best); };
+  name_block(grid, live_count, cx, cy, query.self, pair_batch.other.data(), count, solve);
   solve();
+  return found;
+}
+
+// Solves the batch's `count` named neighbours of the query's ball into `best`, and empties it;
+// whether some pair meets.
+CAROM_ALWAYS_INLINE inline bool World::Impl::solve_named(const detail::SlotQuery& query,
+                                                         std::size_t& count, Event& best) {
+  detail::PairBatch& batch = pair_batch;
+  batch.count = count;
+  batch.solve_slots(balls.data(), query);
+  const bool found = take_hits(batch.hits, batch.rescales, query, best);
+  batch.count = 0;
+  count = 0;
+  return found;
 }
 
 // Every other case: the edges of the grid (clipped, or wrapped with the minimum image), small
@@ -569,7 +591,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
 // (offset, relative velocity, sum of radii) whose pairs are solved together (pair_batch.hpp),
 // then each hit considered. The lambdas are inlined by force: each runs several times a
 // prediction, where a call costs as much as its body.
-[[gnu::noinline]] void World::Impl::predict_gathered(std::uint32_t ball, std::int32_t cell,
+[[gnu::noinline]] bool World::Impl::predict_gathered(std::uint32_t ball, std::int32_t cell,
                                                      bool interior, Event& best) const {
   const BallSlot& b = balls[ball];
   const Vec2 p = b.position;
@@ -579,8 +601,10 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
   const std::int32_t cy = grid.row(cell);
   const bool movable = kind.movable();
   detail::PairBatch batch;
+  bool found = false;
   const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
     batch.solve(kFarFuture);
+    found |= batch.hits != 0;
     for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
       const auto k = static_cast<std::size_t>(std::countr_zero(hits));
       consider_contact(best, batch.other[k], batch.t[k]);
@@ -590,6 +614,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
       const detail::Crossing crossing = detail::entry_crossing_rescaled(
           {{batch.sx[k], batch.sy[k]}, {batch.ux[k], batch.uy[k]}, batch.reach[k]}, kFarFuture);
       if (crossing.found) consider_contact(best, batch.other[k], crossing.t);
+      found |= crossing.found;
     }
     batch.count = 0;
   };
@@ -648,6 +673,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::predict_named(const detail::SlotQue
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Direct{}); });
   }
   solve_batch();
+  return found;
 }
 
 // ---- the event loop -----------------------------------------------------------------------
@@ -837,7 +863,7 @@ bool World::Impl::process(const Event& event) {
     case EventKind::ball_wall:
       return resolve_ball_wall(i, event.partner, event.time);
     case EventKind::cell_crossing:
-      cross_cell(i, event.partner, event.time);
+      cross_cell(i, event.partner, event.time, event.partner_version == detail::kClearBehind);
       return false;
   }
   return false;
@@ -960,12 +986,13 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   return resolved;
 }
 
-void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t) {
+void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, bool clear_behind) {
   advance(ball, t);
   BallSlot& b = balls[ball];
   const std::int32_t cell = grid.cell_of_ball(ball);
   std::int32_t cx = grid.column(cell);
   std::int32_t cy = grid.row(cell);
+  const bool interior_before = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny();
   // By table, indexed by the side: which side is random, a branch on it mispredicts.
   static constexpr std::int32_t kStepX[4] = {-1, 1, 0, 0};  // kLeft, kRight, kDown, kUp
   static constexpr std::int32_t kStepY[4] = {0, 0, -1, 1};
@@ -999,7 +1026,33 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t) {
   }
   grid.erase(ball);
   grid.insert(ball, grid.index(cx, cy));
-  predict(ball);
+  Event best;
+  detail::SlotQuery query;
+  PredictionCell where;
+  const bool named = start_prediction(ball, best, query, where);
+  if (!(clear_behind && named && interior_before)) {
+    finish_prediction(named, best, query, where);
+    return;
+  }
+  // The last prediction found no contact with any ball of the old block, and of its nine cells
+  // the new block keeps six: only the three it brings into reach, across the new cell's far
+  // side, are looked at (docs/world.md, "Crossing a cell").
+  const std::int32_t step_x = kStepX[side & 3];
+  const std::int32_t step_y = kStepY[side & 3];
+  const std::int32_t first =
+      step_x != 0 ? grid.index(cx + step_x, cy - 1) : grid.index(cx - 1, cy + step_y);
+  const std::int32_t stride = step_x != 0 ? grid.nx() : 1;
+  std::size_t count = 0;
+  bool found = false;
+  for (std::int32_t k = 0; k < 3; ++k) {
+    for (std::int32_t j = grid.first_ball(first + k * stride); j != detail::kNoBall;
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      pair_batch.other[count++] = static_cast<std::uint32_t>(j);
+      if (count == detail::PairBatch::kCapacity) found |= solve_named(query, count, best);
+    }
+  }
+  found |= solve_named(query, count, best);
+  file_prediction(best, found);
 }
 
 }  // namespace carom

@@ -222,12 +222,15 @@ struct World::Impl {
                          const PredictionCell& where);
   // predict's contacts with the balls around (world_engine.cpp): read from their slots by the
   // pair kernel (a movable ball in an interior cell), or gathered (every case).
-  void predict_named(const detail::SlotQuery& query, std::int32_t cx, std::int32_t cy,
+  // (These three return whether some pair meets, at any time.)
+  bool predict_named(const detail::SlotQuery& query, std::int32_t cx, std::int32_t cy,
                      detail::Event& best);
-  void take_hits(std::uint32_t hits, std::uint32_t rescales, const detail::SlotQuery& query,
+  bool solve_named(const detail::SlotQuery& query, std::size_t& count, detail::Event& best);
+  bool take_hits(std::uint32_t hits, std::uint32_t rescales, const detail::SlotQuery& query,
                  detail::Event& best) const;
-  void predict_gathered(std::uint32_t ball, std::int32_t cell, bool interior,
+  bool predict_gathered(std::uint32_t ball, std::int32_t cell, bool interior,
                         detail::Event& best) const;
+  void file_prediction(detail::Event& best, bool found);
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
@@ -271,7 +274,10 @@ struct World::Impl {
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
-  void cross_cell(std::uint32_t ball, std::uint32_t side, double t);
+  // A ball leaving its cell through `side` at t: moved to the next cell and predicted, looking only
+  // at the cells the crossing brings into reach where its last prediction found no contact
+  // around it (clear_behind; docs/world.md, "Crossing a cell").
+  void cross_cell(std::uint32_t ball, std::uint32_t side, double t, bool clear_behind);
   [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
 };
 

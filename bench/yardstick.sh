@@ -50,9 +50,10 @@ while [ $# -ge 4 ]; do
   rounds=$4
   shift 4
   line=$("$here/paired_runs.sh" "$work/textbook" "$probe" "$n" "$eta" "$per_ball" "$rounds" | tail -n 1)
-  median=$(echo "$line" | sed -n 's/.*median \([0-9.]*\), quartiles \([0-9.]*\) and \([0-9.]*\).*/\1/p')
-  low=$(echo "$line" | sed -n 's/.*median \([0-9.]*\), quartiles \([0-9.]*\) and \([0-9.]*\).*/\2/p')
-  high=$(echo "$line" | sed -n 's/.*median \([0-9.]*\), quartiles \([0-9.]*\) and \([0-9.]*\).*/\3/p')
+  # paired_runs.sh's verdict: "... new/old median M, quartiles L and H (...)".
+  read -r median low high <<VERDICT
+$(echo "$line" | sed -n 's/.*median \([0-9.]*\), quartiles \([0-9.]*\) and \([0-9.]*\).*/\1 \2 \3/p')
+VERDICT
   if [ -z "$median" ]; then
     echo "$0: no verdict for N = $n, eta = $eta: $line" >&2
     exit 1

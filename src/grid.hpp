@@ -48,6 +48,11 @@ class Grid {
   [[nodiscard]] Vec2 upper() const { return lower_ + Vec2{cell_.x * nx_, cell_.y * ny_}; }
   [[nodiscard]] bool periodic() const { return periodic_; }
   [[nodiscard]] std::int32_t index(std::int32_t cx, std::int32_t cy) const { return cy * nx_ + cx; }
+  // Whether the 3×3 block around cell (cx, cy) lies inside the grid (no cell of it clipped or
+  // wrapped).
+  [[nodiscard]] bool block_inside(std::int32_t cx, std::int32_t cy) const {
+    return cx > 0 && cy > 0 && cx + 1 < nx_ && cy + 1 < ny_;
+  }
   // (Cell numbers are below 2^31: the row by multiplication, not a division instruction.)
   [[nodiscard]] std::int32_t row(std::int32_t cell) const {
     return static_cast<std::int32_t>(rows_.divide(static_cast<std::uint32_t>(cell)));

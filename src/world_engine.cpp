@@ -144,23 +144,31 @@ CAROM_ALWAYS_INLINE inline void for_each_block_list(const detail::Grid& grid,
   }
 }
 
-// Names in `names`, from `count` on, the balls filed in the 3×3 block around the interior cell
-// (cx, cy), all but `self`, and calls solve() (which empties the batch, count included) whenever
-// the batch is full. The ball itself is in its cell's list: named, and counted out again, so that
-// where it sits in the list needs no branch. (The count is the caller's local: GCC keeps a
-// batch's count in memory, stored and loaded at every name.)
+// Names in `names`, from `count` on, the balls of a cell's list from `first`, all but `self`,
+// and calls solve() (which empties the batch, count included) whenever the batch is full. The
+// ball itself is in its cell's list: named, and counted out again, so that where it sits in the
+// list needs no branch. (The count is the caller's local: GCC keeps a batch's count in memory,
+// stored and loaded at every name.)
+template <typename Solve>
+CAROM_ALWAYS_INLINE inline void name_list(const detail::Grid& grid, std::int32_t first,
+                                          std::uint32_t self, std::uint32_t* names,
+                                          std::size_t& count, Solve&& solve) {
+  for (std::int32_t j = first; j != detail::kNoBall;
+       j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+    names[count] = static_cast<std::uint32_t>(j);
+    count += static_cast<std::size_t>(static_cast<std::uint32_t>(j) != self);
+    if (count == detail::PairBatch::kCapacity) solve();
+  }
+}
+
+// name_list for each list of the 3×3 block around the interior cell (cx, cy).
 template <typename Solve>
 CAROM_ALWAYS_INLINE inline void name_block(const detail::Grid& grid, std::size_t live_count,
                                            std::int32_t cx, std::int32_t cy, std::uint32_t self,
                                            std::uint32_t* names, std::size_t& count,
                                            Solve&& solve) {
   for_each_block_list(grid, live_count, cx, cy, [&](std::int32_t first) CAROM_ALWAYS_INLINE {
-    for (std::int32_t j = first; j != detail::kNoBall;
-         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
-      names[count] = static_cast<std::uint32_t>(j);
-      count += static_cast<std::size_t>(static_cast<std::uint32_t>(j) != self);
-      if (count == detail::PairBatch::kCapacity) solve();
-    }
+    name_list(grid, first, self, names, count, solve);
   });
 }
 
@@ -432,8 +440,8 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball
   where.cell = cell;
   where.cx = cx;
   where.cy = cy;
-  where.interior = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny() &&
-                   grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
+  where.interior =
+      grid.block_inside(cx, cy) && grid.nx() >= kInteriorMinCells && grid.ny() >= kInteriorMinCells;
   query.self = ball;
   query.p = p;
   query.v = v;
@@ -992,7 +1000,7 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, b
   const std::int32_t cell = grid.cell_of_ball(ball);
   std::int32_t cx = grid.column(cell);
   std::int32_t cy = grid.row(cell);
-  const bool interior_before = cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny();
+  const bool interior_before = grid.block_inside(cx, cy);
   // By table, indexed by the side: which side is random, a branch on it mispredicts.
   static constexpr std::int32_t kStepX[4] = {-1, 1, 0, 0};  // kLeft, kRight, kDown, kUp
   static constexpr std::int32_t kStepY[4] = {0, 0, -1, 1};
@@ -1044,14 +1052,12 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, b
   const std::int32_t stride = step_x != 0 ? grid.nx() : 1;
   std::size_t count = 0;
   bool found = false;
+  const auto solve = [&]() CAROM_ALWAYS_INLINE { found |= solve_named(query, count, best); };
   for (std::int32_t k = 0; k < 3; ++k) {
-    for (std::int32_t j = grid.first_ball(first + k * stride); j != detail::kNoBall;
-         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
-      pair_batch.other[count++] = static_cast<std::uint32_t>(j);
-      if (count == detail::PairBatch::kCapacity) found |= solve_named(query, count, best);
-    }
+    name_list(grid, grid.first_ball(first + k * stride), ball, pair_batch.other.data(), count,
+              solve);
   }
-  found |= solve_named(query, count, best);
+  solve();
   file_prediction(best, found);
 }
 

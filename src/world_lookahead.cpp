@@ -82,7 +82,7 @@ void World::Impl::look_ahead() {
 // Asks for the list heads of the 3 × 3 block around cell (cx, cy) and notes the cell for the
 // next call, when the block is an interior one (the rest are few).
 [[gnu::always_inline]] inline void World::Impl::lookahead_block(std::int32_t cx, std::int32_t cy) {
-  if (!(cx > 0 && cy > 0 && cx + 1 < grid.nx() && cy + 1 < grid.ny())) return;
+  if (!grid.block_inside(cx, cy)) return;
   grid.prefetch_block_heads(cx, cy);
   lookahead.cells[lookahead.parity].push_if(grid.index(cx, cy), true);
 }

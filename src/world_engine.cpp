@@ -102,13 +102,6 @@ constexpr std::uint32_t kPrefetchMinBalls = 1u << 16;
 // slots, the queue's stalls gone) also at 10⁵ (12 MB): paired 0.924 (η = 0.3) and 0.815 (0.6);
 // at 70 000 (8.5 MB) 1.056, still more (docs/performance.md, seventeenth slice).
 constexpr std::uint32_t kDeepLookaheadMinBalls = 90'000;
-// Worlds with at least this many balls walk a prediction's nine cells one by one, not only the
-// occupied ones (predict): their cell heads come from main memory, and branches on them, once
-// predicted, let the processor run ahead to the next cells' loads. Measured on the gas, ns a
-// collision: 10⁵ balls, mask 744 / 594 against 800 / 622 one by one (η = 0.3 / 0.6);
-// 4·10⁵ alike; 10⁶ one by one 1 840 / 1 398 against 1 961 / 1 420 (docs/performance.md, ninth
-// slice).
-constexpr std::uint32_t kCellByCellMinBalls = 1u << 19;
 
 // The unit vector along d, d not zero. Where d·d is far from both ends of the double range,
 // d / √(d·d) (within an ulp or so of unit length, as carom::normalized's quotient by std::hypot
@@ -125,19 +118,13 @@ CAROM_ALWAYS_INLINE inline Vec2 unit_along(Vec2 d) {
 // Calls visit(first ball) for each list of the 3×3 block around the interior cell (cx, cy), in
 // row-major order. Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3), so the
 // heads are read first and only the occupied lists visited: an empty cell costs a comparison
-// rather than a turn of the loop and a branch that often mispredicts. Worlds of
-// kCellByCellMinBalls balls or more visit all nine, empty ones (kNoBall) too.
+// rather than a turn of the loop and a branch that often mispredicts. (Large worlds once walked
+// all nine cells one by one, whose branches let the processor run ahead to heads in main
+// memory; since the lookahead asks for the heads in advance, this way is faster at every size:
+// 10⁶ balls 6 – 8 % and 6·10⁵ 9 %, docs/performance.md, nineteenth slice.)
 template <typename Visit>
-CAROM_ALWAYS_INLINE inline void for_each_block_list(const detail::Grid& grid,
-                                                    std::size_t live_count, std::int32_t cx,
+CAROM_ALWAYS_INLINE inline void for_each_block_list(const detail::Grid& grid, std::int32_t cx,
                                                     std::int32_t cy, Visit&& visit) {
-  if (live_count >= kCellByCellMinBalls) {
-    for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
-      const std::int32_t first = grid.index(cx - 1, row);
-      for (std::int32_t k = 0; k < 3; ++k) visit(grid.first_ball(first + k));
-    }
-    return;
-  }
   const detail::Grid::BlockHeads block = grid.block_heads(cx, cy);
   for (std::uint32_t occupied = block.occupied; occupied != 0; occupied &= occupied - 1) {
     visit(block.heads[std::countr_zero(occupied)]);
@@ -163,11 +150,11 @@ CAROM_ALWAYS_INLINE inline void name_list(const detail::Grid& grid, std::int32_t
 
 // name_list for each list of the 3×3 block around the interior cell (cx, cy).
 template <typename Solve>
-CAROM_ALWAYS_INLINE inline void name_block(const detail::Grid& grid, std::size_t live_count,
-                                           std::int32_t cx, std::int32_t cy, std::uint32_t self,
+CAROM_ALWAYS_INLINE inline void name_block(const detail::Grid& grid, std::int32_t cx,
+                                           std::int32_t cy, std::uint32_t self,
                                            std::uint32_t* names, std::size_t& count,
                                            Solve&& solve) {
-  for_each_block_list(grid, live_count, cx, cy, [&](std::int32_t first) CAROM_ALWAYS_INLINE {
+  for_each_block_list(grid, cx, cy, [&](std::int32_t first) CAROM_ALWAYS_INLINE {
     name_list(grid, first, self, names, count, solve);
   });
 }
@@ -521,9 +508,9 @@ void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
     count = 0;
     split = split < kCapacity ? 0 : kCapacity;
   };
-  name_block(grid, live_count, where_i.cx, where_i.cy, i, batch.other.data(), count, solve);
+  name_block(grid, where_i.cx, where_i.cy, i, batch.other.data(), count, solve);
   split = count;
-  name_block(grid, live_count, where_j.cx, where_j.cy, j, batch.other.data(), count, solve);
+  name_block(grid, where_j.cx, where_j.cy, j, batch.other.data(), count, solve);
   solve();
   file_prediction(best_i, found_i);
   file_prediction(best_j, found_j);
@@ -576,7 +563,7 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::predict_named(const detail::SlotQue
   std::size_t count = 0;
   bool found = false;
   const auto solve = [&]() CAROM_ALWAYS_INLINE { found |= solve_named(query, count, best); };
-  name_block(grid, live_count, cx, cy, query.self, pair_batch.other.data(), count, solve);
+  name_block(grid, cx, cy, query.self, pair_batch.other.data(), count, solve);
   solve();
   return found;
 }
@@ -673,8 +660,7 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::solve_named(const detail::SlotQuery
   if (few_cells) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Around{}); });
   } else if (interior) {
-    for_each_block_list(grid, live_count, cx, cy,
-                        [&](std::int32_t first) { gather_list(first, Direct{}); });
+    for_each_block_list(grid, cx, cy, [&](std::int32_t first) { gather_list(first, Direct{}); });
   } else if (periodic) {
     grid.for_each_neighbour(cell, [&](std::int32_t n) { gather(n, Nearest{}); });
   } else {

@@ -17,16 +17,18 @@ struct Species {
   double mass = 0.0;         // kImmovable (+infinity) for an immovable ball
   double restitution = 1.0;  // the ball's own, or the world's where its BallDef left it unset
   std::uint32_t balls = 0;   // live balls of this species; 0: free, to be reused
+  // 1/mass (+0 for an immovable ball), kept: a contact's response would otherwise divide for
+  // both balls, on the way from the contact to the two balls' next predictions.
+  double inverse_mass = 0.0;
 
-  // 1/mass (+0 for an immovable ball), computed where needed.
-  [[nodiscard]] double inverse_mass() const { return 1.0 / mass; }
   [[nodiscard]] bool movable() const { return mass != kImmovable; }
 };
 
 // Species by number. A ball names its species; equal (radius, mass, restitution), bit for bit,
 // share one as long as a small cache of recent kinds finds it, so that a world of a few kinds
-// has a few species and one of all-different balls one species a ball (32 bytes, like the
-// fields it replaces). Which number a ball gets never changes a result: only its fields are read.
+// has a few species and one of all-different balls one species a ball (40 bytes, 8 more than
+// the fields it replaces). Which number a ball gets never changes a result: only its fields are
+// read.
 class SpeciesTable {
  public:
   // The species for these fields, counting one more ball of it.
@@ -46,7 +48,7 @@ class SpeciesTable {
       id = free_.back();
       free_.pop_back();
     }
-    table_[id] = {radius, mass, restitution, 1};
+    table_[id] = {radius, mass, restitution, 1, 1.0 / mass};
     cached = id;
     return id;
   }

@@ -866,7 +866,8 @@ bool World::Impl::process(const Event& event) {
   return false;
 }
 
-double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j, double t) const {
+CAROM_ALWAYS_INLINE inline double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j,
+                                                                double t) const {
   // Inelastic collapse prevention (TC model): recently collided balls bounce elastically.
   const double recent = t - def.collapse_time;
   if (def.collapse_time > 0.0 &&
@@ -888,8 +889,8 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
   bool resolved = false;
   if (approach > 0.0) {
     const double restitution = pair_restitution(i, j, t);
-    const double inverse_a = species_of(i).inverse_mass();
-    const double inverse_b = species_of(j).inverse_mass();
+    const double inverse_a = species_of(i).inverse_mass;
+    const double inverse_b = species_of(j).inverse_mass;
     const double impulse = (1.0 + restitution) * approach / (inverse_a + inverse_b);
     a.velocity -= normal * (impulse * inverse_a);
     b.velocity += normal * (impulse * inverse_b);

@@ -153,7 +153,7 @@ std::string World::Impl::save_payload() const {
     out.vec2(b.velocity);
     out.f64(b.local_time);
     out.f64(kind.radius);
-    out.f64(b.alive() ? kind.inverse_mass() : 0.0);
+    out.f64(b.alive() ? kind.inverse_mass : 0.0);
     out.u32(b.version);
     out.f64(kind.mass);
     out.f64(kind.restitution);

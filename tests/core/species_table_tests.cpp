@@ -29,7 +29,8 @@ TEST(SpeciesTable, KindsDifferingInAnyFieldOrBitAreApart) {
   EXPECT_NE(negative_zero, restitution);  // bit for bit: a save writes back what was given
   EXPECT_EQ(table[radius].radius, std::nextafter(0.5, 1.0));
   EXPECT_FALSE(table[mass].movable());
-  EXPECT_EQ(table[mass].inverse_mass(), 0.0);
+  EXPECT_EQ(table[mass].inverse_mass, 0.0);
+  EXPECT_EQ(table[table.acquire(0.5, 4.0, 1.0)].inverse_mass, 0.25);
   EXPECT_TRUE(std::signbit(table[negative_zero].restitution));
 }
 

@@ -147,13 +147,13 @@ std::string World::Impl::save_payload() const {
     const detail::BallSlot& b = balls[i];
     const detail::BallInfo& info = infos[i];
     // A free slot keeps no species: its kind is written as zeros (load ignores it).
-    const detail::Species kind = b.alive() ? species_of(i) : detail::Species{0.0, 0.0, 0.0, 0};
+    const detail::Species kind = b.alive() ? species_of(i) : detail::Species{0.0, 0.0, 0.0, 0, 0.0};
     out.u8(b.alive() ? 1 : 0);
     out.vec2(b.position);
     out.vec2(b.velocity);
     out.f64(b.local_time);
     out.f64(kind.radius);
-    out.f64(b.alive() ? kind.inverse_mass : 0.0);
+    out.f64(kind.inverse_mass);
     out.u32(b.version);
     out.f64(kind.mass);
     out.f64(kind.restitution);

@@ -40,6 +40,19 @@ export async function openBrowser() {
 // (body[data-ready]). problems lists every console error and uncaught exception, as text.
 export async function openPage(session, path, viewport = {width: 1200, height: 900}) {
   const page = await session.browser.newPage({viewport});
+  return {page, problems: await loadRecordingProblems(session, page, path)};
+}
+
+// The same on a phone-sized screen that takes touches, in a browser context of its own: close
+// the context (which closes the page) when done.
+export async function openTouchPage(session, path) {
+  const context = await session.browser.newContext({hasTouch: true,
+                                                    viewport: {width: 390, height: 844}});
+  const page = await context.newPage();
+  return {context, page, problems: await loadRecordingProblems(session, page, path)};
+}
+
+async function loadRecordingProblems(session, page, path) {
   const problems = [];
   page.on('console', (message) => {
     if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
@@ -48,7 +61,7 @@ export async function openPage(session, path, viewport = {width: 1200, height: 9
   page.on('requestfailed', (request) => problems.push(`request failed: ${request.url()}`));
   await page.goto(session.base + path);
   await page.waitForSelector('body[data-ready="true"]', {timeout: 20000});
-  return {page, problems};
+  return problems;
 }
 
 // The text of the element marked data-readout="key".

@@ -4,7 +4,7 @@
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {OUTPUT, openBrowser, openPage, openTouchPage, readout} from './browser.mjs';
 import {touchDrag} from './drag.mjs';
 
 // At 60 frames a second 10 time units take 10 s; a loaded machine may give fewer frames.
@@ -106,14 +106,7 @@ test('a dragged ball stops at the first ball or wall in its way', async () => {
 });
 
 test('a ball can be dragged with a finger', async () => {
-  const context = await session.browser.newContext({hasTouch: true,
-                                                    viewport: {width: 390, height: 844}});
-  const page = await context.newPage();
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  page.on('pageerror', (e) => problems.push(e.message));
-  await page.goto(`${session.base}many-balls.html?n=10&paused=1`);
-  await page.waitForSelector('body[data-ready="true"]');
+  const {context, page, problems} = await openTouchPage(session, 'many-balls.html?n=10&paused=1');
   const before = await position(page, 0);
   const start = await ballOnScreen(page, 0);
   await touchDrag(page, start, {x: start.x + 30, y: start.y + 30});

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import {execFileSync} from 'node:child_process';
 import {after, before, test} from 'node:test';
 
-import {CAROM_CLI, OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {CAROM_CLI, OUTPUT, openBrowser, openPage, openTouchPage, readout} from './browser.mjs';
 import {figurePoint, mouseDrag, sameDigits, touchDrag} from './drag.mjs';
 
 let session;
@@ -101,14 +101,7 @@ test('masses and restitution from the sliders reach the bounce', async () => {
 });
 
 test('a touch drag moves the end of B\'s movement', async () => {
-  const context = await session.browser.newContext({hasTouch: true,
-                                                    viewport: {width: 390, height: 844}});
-  const page = await context.newPage();
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  page.on('pageerror', (e) => problems.push(e.message));
-  await page.goto(`${session.base}two-balls.html`);
-  await page.waitForSelector('body[data-ready="true"]');
+  const {context, page, problems} = await openTouchPage(session, 'two-balls.html');
   // B starts at (8, 3) moving by (-4, -1): the end handle is at (4, 2).
   await touchDrag(page, await figurePoint(page, {x: 4, y: 2}),
                   await figurePoint(page, {x: 3, y: 0.5}));

@@ -4,7 +4,7 @@
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {OUTPUT, openBrowser, openPage, openTouchPage, readout} from './browser.mjs';
 import {figurePoint, mouseDrag, sameDigits, touchDrag} from './drag.mjs';
 
 let session;
@@ -73,14 +73,7 @@ test('a ball inside the arc meets it from inside', async () => {
 });
 
 test('a touch drag moves a segment\'s end point', async () => {
-  const context = await session.browser.newContext({hasTouch: true,
-                                                    viewport: {width: 390, height: 844}});
-  const page = await context.newPage();
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  page.on('pageerror', (e) => problems.push(e.message));
-  await page.goto(`${session.base}walls.html`);
-  await page.waitForSelector('body[data-ready="true"]');
+  const {context, page, problems} = await openTouchPage(session, 'walls.html');
   await touchDrag(page, await figurePoint(page, {x: 6, y: -3}),
                   await figurePoint(page, {x: 7, y: -4}));
   assert.equal(await readout(page, 'segment0'), '(7, -4) to (6, 3)');

@@ -69,20 +69,39 @@ void BM_DependentLoad(benchmark::State& state) {
 }
 BENCHMARK(BM_DependentLoad)->RangeMultiplier(2)->Range(1, 256)->Unit(benchmark::kMicrosecond);
 
+// The cycle of BM_ParallelLoads, shared by its seven chain counts and laid out by the first of
+// them to run: laying it out takes longer than measuring (seconds; far longer under a sanitizer,
+// in the suite's smoke run). It stays allocated until the process ends.
+struct Cycle {
+  static constexpr std::size_t kCount = (std::size_t{256} << 20) / sizeof(Line);
+  std::unique_ptr<Line[], FreeMemory> lines = huge_page_lines(kCount);
+  std::vector<std::size_t> order = std::vector<std::size_t>(kCount);  // the lines in cycle order
+  Cycle() {
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::shuffle(order.begin(), order.end(), std::mt19937_64(20261201));
+    for (std::size_t k = 0; k < kCount; ++k) {
+      lines[order[k]].next = &lines[order[(k + 1) % kCount]];
+    }
+  }
+};
+
+const Cycle& shared_cycle() {
+  static const Cycle cycle;
+  return cycle;
+}
+
 // The same random cycle through 256 MiB (all in memory), walked by `kChains` independent chains
 // at once, spread evenly along it: the processor overlaps their misses, as many as it keeps in
 // flight. per_line is the time a line then, the least a memory-bound loop pays for each line
 // it needs however early it asks for it (docs/performance.md, fourteenth slice).
 template <std::size_t kChains>
 void BM_ParallelLoads(benchmark::State& state) {
-  constexpr std::size_t kCount = (std::size_t{256} << 20) / sizeof(Line);
-  const auto lines = huge_page_lines(kCount);
-  std::vector<std::size_t> order(kCount);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::shuffle(order.begin(), order.end(), std::mt19937_64(20261201));
-  for (std::size_t k = 0; k < kCount; ++k) lines[order[k]].next = &lines[order[(k + 1) % kCount]];
+  const Cycle& cycle = shared_cycle();
+  constexpr std::size_t kCount = Cycle::kCount;
   const Line* at[kChains];
-  for (std::size_t c = 0; c < kChains; ++c) at[c] = &lines[order[c * (kCount / kChains)]];
+  for (std::size_t c = 0; c < kChains; ++c) {
+    at[c] = &cycle.lines[cycle.order[c * (kCount / kChains)]];
+  }
   constexpr std::size_t kStepsPerIteration = 4096 / kChains;
   for (auto _ : state) {
     for (std::size_t k = 0; k < kStepsPerIteration; ++k) {

@@ -5,9 +5,9 @@
 # instead N ctest tests, `<prefix>shard_K_of_N`, each running the K-th of N shards of its tests
 # in one process (GoogleTest's GTEST_SHARD_INDEX / GTEST_TOTAL_SHARDS). The clang-asan preset
 # uses it: there a test process costs more to start than most tests take to run (AddressSanitizer
-# maps its shadow memory and checks for leaks at exit, in each of 600 processes), so the suite
-# spends less time starting processes, and the shards keep both cores busy (docs/design.md,
-# "CI time"). A shard's output names any test that fails.
+# maps its shadow memory and checks for leaks at exit, in each of some 600 processes), so the
+# suite spends less time starting processes, and the shards keep both cores busy
+# (docs/design.md, "CI time"). A shard's output names any test that fails.
 include(GoogleTest)
 
 set(CAROM_TEST_SHARDS 0 CACHE STRING

@@ -1,6 +1,7 @@
-// carom benchmarks: what the hard-disk gas programs (carom_world_gas_probe, carom_textbook_gas)
-// share so that their figures compare: the CPU clock they are timed by, and the random order in
-// which SHUFFLED=1 numbers the disks (one permutation for both, by construction).
+// carom benchmarks: what the hard-disk gas programs (carom_world_gas_probe, carom_textbook_gas,
+// carom_slot_cells_gas) share so that their figures compare: the CPU clock they are timed by, the
+// random order in which SHUFFLED=1 numbers the disks (one permutation for all, by construction),
+// the start read out of carom's World, and the equal-mass bounce of the simulators beside it.
 #pragma once
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 #include <ctime>
 #include <random>
 #include <vector>
+
+#include "carom/world.hpp"
 
 namespace carom::bench {
 
@@ -25,6 +28,40 @@ inline std::vector<std::size_t> shuffled_order(std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) order[i] = i;
   std::shuffle(order.begin(), order.end(), std::mt19937_64(2));
   return order;
+}
+
+// A gas's start as plain arrays (positions and velocities, in the World's order of balls()),
+// for the simulators that run it without carom's engine.
+struct GasStart {
+  double side = 0.0;
+  std::vector<double> x, y, vx, vy;
+};
+
+inline GasStart start_of(const carom::World& world, double side) {
+  GasStart start;
+  start.side = side;
+  for (const carom::BallId id : world.balls()) {
+    const carom::Vec2 p = world.position(id);
+    const carom::Vec2 v = world.velocity(id);
+    start.x.push_back(p.x);
+    start.y.push_back(p.y);
+    start.vx.push_back(v.x);
+    start.vy.push_back(v.y);
+  }
+  return start;
+}
+
+// The elastic equal-mass bounce of two disks whose centres are (dx, dy) apart (from a to b, the
+// nearest image): the components of the velocities along the line of centres are exchanged. The
+// impulse is divided by |d|² as computed, so that energy is conserved whatever the rounding of
+// the contact positions.
+template <class Disk>
+void exchange_normal_velocities(Disk& a, Disk& b, double dx, double dy) {
+  const double factor = ((b.vx - a.vx) * dx + (b.vy - a.vy) * dy) / (dx * dx + dy * dy);
+  a.vx += factor * dx;
+  a.vy += factor * dy;
+  b.vx -= factor * dx;
+  b.vy -= factor * dy;
 }
 
 }  // namespace carom::bench

@@ -282,23 +282,14 @@ class Gas {
     link(i);
   }
 
-  // Elastic equal-mass bounce: the components of the velocities along the line of centres are
-  // exchanged (the impulse along dr, divided by |dr|² as computed, so that energy is conserved
-  // whatever the rounding of the contact positions).
+  // Elastic equal-mass bounce (gas_run_support.hpp).
   void collide(std::uint32_t i, std::uint32_t j) {
     Ball& a = balls_[i];
     Ball& b = balls_[j];
     advance(a);
     advance(b);
-    const double dx = minimum_image(b.x - a.x);
-    const double dy = minimum_image(b.y - a.y);
-    const double dvx = b.vx - a.vx;
-    const double dvy = b.vy - a.vy;
-    const double factor = (dx * dvx + dy * dvy) / (dx * dx + dy * dy);
-    a.vx += factor * dx;
-    a.vy += factor * dy;
-    b.vx -= factor * dx;
-    b.vy -= factor * dy;
+    carom::bench::exchange_normal_velocities(a, b, minimum_image(b.x - a.x),
+                                             minimum_image(b.y - a.y));
     ++a.collisions;
     ++b.collisions;
   }
@@ -444,25 +435,8 @@ long resident_kib() {
   return read == 2 ? resident * 4 : -1;
 }
 
-// The scene's start, read out of the World that carom's hard-disk setup builds.
-struct Start {
-  double side = 0.0;
-  std::vector<double> x, y, vx, vy;
-};
-
-Start start_of(const carom::World& world, double side) {
-  Start start;
-  start.side = side;
-  for (const carom::BallId id : world.balls()) {
-    const carom::Vec2 p = world.position(id);
-    const carom::Vec2 v = world.velocity(id);
-    start.x.push_back(p.x);
-    start.y.push_back(p.y);
-    start.vx.push_back(v.x);
-    start.vy.push_back(v.y);
-  }
-  return start;
-}
+using Start = carom::bench::GasStart;
+using carom::bench::start_of;
 
 // The same balls numbered in the random order of carom_world_gas_probe's SHUFFLED=1.
 Start shuffled(const Start& start) {

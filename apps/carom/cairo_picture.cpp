@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "readable_number.hpp"
+#include "svg_elements.hpp"
 
 namespace carom::cli {
 namespace {
@@ -23,7 +24,6 @@ constexpr double kOutlineWidth = 0.5;           // a ball's outline, in thin lin
 constexpr double kOutlineSmallestRadius = 2.0;  // pixels: smaller balls are drawn without one
 constexpr double kArrowWidth = 1.0;
 constexpr double kHeadLengthLines = 5.0;  // an arrow head's length, in thin lines
-constexpr double kHeadHalfWidthShare = 0.4;
 constexpr int kLegendStops = 16;
 constexpr const char* kFontFamily = "DejaVu Sans";
 

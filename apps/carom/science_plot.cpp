@@ -6,29 +6,19 @@
 
 #include "readable_number.hpp"
 #include "svg_writer.hpp"
+#include "value_range.hpp"
 
 namespace carom::cli {
 namespace {
 
 // The plot area in the figure's own coordinates; SvgFigure scales it to the picture.
-constexpr double kWidth = 10.0;
-constexpr double kHeight = 6.5;
+constexpr double kAreaWidth = 10.0;
+constexpr double kAreaHeight = 6.5;
 constexpr double kTick = 0.12;
 constexpr int kTargetTicks = 6;
 
-struct Range {
-  double low = std::numeric_limits<double>::infinity();
-  double high = -std::numeric_limits<double>::infinity();
-  void add(double value) {
-    if (!std::isfinite(value)) return;
-    low = std::min(low, value);
-    high = std::max(high, value);
-  }
-  [[nodiscard]] bool empty() const { return !(low <= high); }
-};
-
 // A round tick spacing (1, 2 or 5 times a power of ten) giving about kTargetTicks ticks.
-double tick_step(const Range& range) {
+double tick_step(const ValueRange& range) {
   const double raw = (range.high - range.low) / kTargetTicks;
   const double power = std::pow(10.0, std::floor(std::log10(raw)));
   for (const double factor : {1.0, 2.0, 5.0}) {
@@ -38,7 +28,7 @@ double tick_step(const Range& range) {
 }
 
 // The range widened to whole ticks (and made non-empty).
-Range rounded(Range range, double& step) {
+ValueRange rounded(ValueRange range, double& step) {
   if (range.empty()) range = {0.0, 1.0};
   if (range.high == range.low) {
     range.low -= 0.5;
@@ -51,8 +41,8 @@ Range rounded(Range range, double& step) {
 }  // namespace
 
 std::string render_plot(const PlotSpec& spec) {
-  Range xs;
-  Range ys;
+  ValueRange xs;
+  ValueRange ys;
   for (const PlotSeries& series : spec.series) {
     for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
       if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
@@ -65,11 +55,11 @@ std::string render_plot(const PlotSpec& spec) {
   }
   double x_step = 1.0;
   double y_step = 1.0;
-  const Range x_range = rounded(xs, x_step);
-  const Range y_range = rounded(ys, y_step);
+  const ValueRange x_range = rounded(xs, x_step);
+  const ValueRange y_range = rounded(ys, y_step);
   const auto to_plot = [&](double x, double y) {
-    return Vec2{(x - x_range.low) / (x_range.high - x_range.low) * kWidth,
-                (y - y_range.low) / (y_range.high - y_range.low) * kHeight};
+    return Vec2{(x - x_range.low) / (x_range.high - x_range.low) * kAreaWidth,
+                (y - y_range.low) / (y_range.high - y_range.low) * kAreaHeight};
   };
 
   SvgFigure figure;
@@ -77,12 +67,12 @@ std::string render_plot(const PlotSpec& spec) {
   if (!spec.subtitle.empty()) figure.heading(spec.subtitle);
   const Pen axis{"black", 1.0, false};
   const Pen grid{"#dddddd", 0.5, false};
-  figure.line({0.0, 0.0}, {kWidth, 0.0}, axis);
-  figure.line({0.0, 0.0}, {0.0, kHeight}, axis);
-  figure.line({kWidth, 0.0}, {kWidth, kHeight}, grid);
-  figure.line({0.0, kHeight}, {kWidth, kHeight}, grid);
+  figure.line({0.0, 0.0}, {kAreaWidth, 0.0}, axis);
+  figure.line({0.0, 0.0}, {0.0, kAreaHeight}, axis);
+  figure.line({kAreaWidth, 0.0}, {kAreaWidth, kAreaHeight}, grid);
+  figure.line({0.0, kAreaHeight}, {kAreaWidth, kAreaHeight}, grid);
   // Ticks by index, not by adding steps, so rounding neither accumulates nor drops the last.
-  const auto ticks = [](const Range& range, double step) {
+  const auto ticks = [](const ValueRange& range, double step) {
     return static_cast<int>(std::lround((range.high - range.low) / step));
   };
   for (int tick = 0; tick <= ticks(x_range, x_step); ++tick) {
@@ -99,8 +89,8 @@ std::string render_plot(const PlotSpec& spec) {
     figure.label(at + Vec2{-kTick, 0.0}, {-1.0, 0.0},
                  readable(std::abs(y) < 1e-12 * y_step ? 0.0 : y), "black");
   }
-  figure.label({kWidth / 2.0, -0.9}, {0.0, -1.0}, spec.x_label, "black");
-  figure.label({0.0, kHeight + 0.3}, {1.0, 1.0}, spec.y_label, "black");
+  figure.label({kAreaWidth / 2.0, -0.9}, {0.0, -1.0}, spec.x_label, "black");
+  figure.label({0.0, kAreaHeight + 0.3}, {1.0, 1.0}, spec.y_label, "black");
 
   for (const PlotSeries& series : spec.series) {
     const Pen pen{series.colour, series.points ? 1.0 : 1.5, series.dashed};

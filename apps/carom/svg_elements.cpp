@@ -12,7 +12,6 @@ constexpr double kDotRadius = 2.0 * kLineWidth;  // clearly smaller than any arr
 // line width so a thick line does not swallow its head.
 constexpr double kHeadFixedLength = 4.0 * kLineWidth;
 constexpr double kHeadLengthPerWidth = 2.5;
-constexpr double kHeadHalfWidthShare = 0.4;  // of the head's length: a slim head
 // An arrow shorter than this many head lengths gets a smaller head, so some shaft still shows.
 constexpr double kShortestArrowInHeads = 1.6;
 // Dashes long enough to read as a line, gaps wide enough to see at a glance.

@@ -22,6 +22,8 @@ struct Pen {
 inline constexpr double kPictureSide = 640.0;  // the longer side of the area a picture fills
 inline constexpr double kLineWidth = kPictureSide / 320.0;  // thin, yet visible scaled down
 inline constexpr double kFontSize = kPictureSide / 40.0;    // readable, small beside the balls
+// An arrow head's half width, as a share of its length: a slim head (the PNG pictures too).
+inline constexpr double kHeadHalfWidthShare = 0.4;
 
 enum class TextAnchor { kStart, kMiddle, kEnd };
 

@@ -8,6 +8,7 @@
 
 #include "readable_number.hpp"
 #include "svg_elements.hpp"
+#include "value_range.hpp"
 
 namespace carom::cli {
 namespace {
@@ -26,19 +27,8 @@ constexpr double kLegendLine = 28.0;
 const Pen kAxisPen{"#000000", 0.5, false};
 const Pen kGridPen{"#dddddd", 0.5, false};
 
-struct Range {
-  double low = std::numeric_limits<double>::infinity();
-  double high = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (!std::isfinite(v)) return;
-    low = std::min(low, v);
-    high = std::max(high, v);
-  }
-  [[nodiscard]] bool empty() const { return !(low <= high); }
-};
-
-Range y_range(const TimePlotSpec& spec) {
-  Range r;
+ValueRange y_range(const TimePlotSpec& spec) {
+  ValueRange r;
   for (const TimePlotSeries& s : spec.series) {
     for (const Vec2 p : s.points) r.add(p.y);
   }
@@ -79,13 +69,13 @@ std::vector<double> round_ticks(double low, double high, int count) {
 }
 
 std::string plot_svg(const TimePlotSpec& spec) {
-  Range xr;
+  ValueRange xr;
   for (const TimePlotSeries& s : spec.series) {
     for (const Vec2 p : s.points) xr.add(p.x);
   }
   if (xr.empty() || !(xr.high > xr.low))
     xr = {xr.empty() ? 0.0 : xr.low, (xr.empty() ? 0.0 : xr.low) + 1.0};
-  const Range yr = y_range(spec);
+  const ValueRange yr = y_range(spec);
   const double plot_w = kWidth - kLeft - kRight;
   const double plot_h = kHeight - kTop - kBottom;
   const auto at = [&](Vec2 p) {

@@ -28,29 +28,29 @@ constexpr double kLegendDiscRadius = 0.45;
 constexpr std::size_t kLegendOneColumnMost = 4;
 constexpr std::size_t kLegendColumns = 2;
 
-// The smallest box around a panel's shapes, in world coordinates.
-struct Bounds {
-  double min_x = std::numeric_limits<double>::infinity();
-  double min_y = std::numeric_limits<double>::infinity();
-  double max_x = -std::numeric_limits<double>::infinity();
-  double max_y = -std::numeric_limits<double>::infinity();
-
-  void add(Vec2 p, double reach = 0.0) {
-    min_x = std::min(min_x, p.x - reach);
-    min_y = std::min(min_y, p.y - reach);
-    max_x = std::max(max_x, p.x + reach);
-    max_y = std::max(max_y, p.y + reach);
-  }
-  [[nodiscard]] bool empty() const { return !(min_x <= max_x); }
-  // Half the box's sides: halves of finite numbers subtract without overflow, so a box spanning
-  // most of the double range still has a size.
-  [[nodiscard]] double half_width() const { return max_x * 0.5 - min_x * 0.5; }
-  [[nodiscard]] double half_height() const { return max_y * 0.5 - min_y * 0.5; }
-};
-
 }  // namespace
 
 struct SvgFigure::Frame {
+  // The smallest box around a panel's shapes, in world coordinates.
+  struct Bounds {
+    double min_x = std::numeric_limits<double>::infinity();
+    double min_y = std::numeric_limits<double>::infinity();
+    double max_x = -std::numeric_limits<double>::infinity();
+    double max_y = -std::numeric_limits<double>::infinity();
+
+    void add(Vec2 p, double reach = 0.0) {
+      min_x = std::min(min_x, p.x - reach);
+      min_y = std::min(min_y, p.y - reach);
+      max_x = std::max(max_x, p.x + reach);
+      max_y = std::max(max_y, p.y + reach);
+    }
+    [[nodiscard]] bool empty() const { return !(min_x <= max_x); }
+    // Half the box's sides: halves of finite numbers subtract without overflow, so a box spanning
+    // most of the double range still has a size.
+    [[nodiscard]] double half_width() const { return max_x * 0.5 - min_x * 0.5; }
+    [[nodiscard]] double half_height() const { return max_y * 0.5 - min_y * 0.5; }
+  };
+
   Bounds world;
   double scale = 1.0;
   Vec2 origin;  // where the world box's top-left corner lands
@@ -232,7 +232,7 @@ std::vector<SvgFigure::Frame> SvgFigure::fit_panels() const {
   std::vector<Frame> frames(panels_.size());
   double largest_half = 0.0;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
-    Bounds& world = frames[i].world;
+    Frame::Bounds& world = frames[i].world;
     for (const Shape& shape : panels_[i].shapes) {
       if (const auto* c = std::get_if<Circle>(&shape)) world.add(c->center, c->radius);
       if (const auto* l = std::get_if<Line>(&shape)) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <ctime>
 #include <random>
 #include <vector>
@@ -30,6 +31,33 @@ inline std::vector<std::size_t> shuffled_order(std::size_t count) {
   return order;
 }
 
+// What a simulator beside carom's engine reports of its timed collisions.
+struct TimedCollisions {
+  std::uint64_t collisions = 0;
+  double cpu_seconds = 0.0;
+  double crossings_per_collision = 0.0;
+  double stale_per_collision = 0.0;
+  double energy_drift = 0.0;  // relative, over the timed collisions
+};
+
+// Runs `wanted` collisions of such a simulator (its run_collisions, crossings, stale and
+// kinetic_energy), timed by this process's CPU time.
+template <class Gas>
+TimedCollisions timed_collisions(Gas& gas, std::uint64_t wanted) {
+  const double energy_before = gas.kinetic_energy();
+  const std::uint64_t crossings_before = gas.crossings();
+  const std::uint64_t stale_before = gas.stale();
+  const double cpu_start = cpu_seconds();
+  TimedCollisions timed;
+  timed.collisions = gas.run_collisions(wanted);
+  timed.cpu_seconds = cpu_seconds() - cpu_start;
+  const auto count = static_cast<double>(timed.collisions);
+  timed.crossings_per_collision = static_cast<double>(gas.crossings() - crossings_before) / count;
+  timed.stale_per_collision = static_cast<double>(gas.stale() - stale_before) / count;
+  timed.energy_drift = (gas.kinetic_energy() - energy_before) / energy_before;
+  return timed;
+}
+
 // A gas's start as plain arrays (positions and velocities, in the World's order of balls()),
 // for the simulators that run it without carom's engine.
 struct GasStart {
@@ -49,6 +77,22 @@ inline GasStart start_of(const carom::World& world, double side) {
     start.vy.push_back(v.y);
   }
   return start;
+}
+
+// A ball's cell along one axis, one step up or down, through the periodic box's edge: leaving the
+// last cell upward it enters cell 0 and its coordinate moves down by the box's side (and the
+// reverse), so that positions stay inside the box and inside their cells.
+template <class Cell>
+void step_cell(Cell& cell, double& coordinate, bool upward, Cell cells, double side) {
+  if (upward) {
+    if (++cell == cells) {
+      cell = 0;
+      coordinate -= side;
+    }
+  } else if (cell-- == 0) {
+    cell = cells - 1;
+    coordinate += side;
+  }
 }
 
 // The elastic equal-mass bounce of two disks whose centres are (dx, dy) apart (from a to b, the

@@ -224,17 +224,8 @@ class Gas {
     Ball& ball = balls_[i];
     advance(ball);
     unlink(i);
-    std::int32_t& cell = side < 2 ? ball.cx : ball.cy;
-    double& coordinate = side < 2 ? ball.x : ball.y;
-    if ((side & 1U) != 0) {
-      if (++cell == columns_) {
-        cell = 0;
-        coordinate -= side_;
-      }
-    } else if (cell-- == 0) {
-      cell = columns_ - 1;
-      coordinate += side_;
-    }
+    carom::bench::step_cell(side < 2 ? ball.cx : ball.cy, side < 2 ? ball.x : ball.y,
+                            (side & 1U) != 0, columns_, side_);
     link(i);
   }
 
@@ -443,27 +434,21 @@ int main(int argc, char** argv) {
     return 2;
   }
   gas.run_collisions(static_cast<std::uint64_t>(equilibrate * static_cast<double>(n)));
-  const double energy_before = gas.kinetic_energy();
-  const std::uint64_t crossings_before = gas.crossings();
-  const std::uint64_t stale_before = gas.stale();
   const auto wanted = static_cast<std::uint64_t>(per_ball * static_cast<double>(n));
-  const double cpu_start = carom::bench::cpu_seconds();
-  const std::uint64_t collisions = gas.run_collisions(wanted);
-  const double cpu = carom::bench::cpu_seconds() - cpu_start;
-  const auto count = static_cast<double>(collisions);
+  const carom::bench::TimedCollisions timed = carom::bench::timed_collisions(gas, wanted);
+  const auto count = static_cast<double>(timed.collisions);
   std::printf(
       "n=%llu eta=%.2f cell=%.3f cells=%d^2 collisions=%llu cpu_s=%.3f cpu_rate=%.0fk/s "
       "cpu_ns_per_collision=%.0f crossings_per_collision=%.3f stale_per_collision=%.3f "
       "balls_and_cells_bytes_per_ball=%.0f energy_drift=%.2e\n",
       static_cast<unsigned long long>(n), eta, start.side / gas.columns(), gas.columns(),
-      static_cast<unsigned long long>(collisions), cpu, count / cpu / 1e3, cpu / count * 1e9,
-      static_cast<double>(gas.crossings() - crossings_before) / count,
-      static_cast<double>(gas.stale() - stale_before) / count,
-      static_cast<double>(gas.bytes()) / static_cast<double>(n),
-      (gas.kinetic_energy() - energy_before) / energy_before);
+      static_cast<unsigned long long>(timed.collisions), timed.cpu_seconds,
+      count / timed.cpu_seconds / 1e3, timed.cpu_seconds / count * 1e9,
+      timed.crossings_per_collision, timed.stale_per_collision,
+      static_cast<double>(gas.bytes()) / static_cast<double>(n), timed.energy_drift);
   if (gas.overflowed()) {
     std::fprintf(stderr, "a cell would have held more than four balls\n");
     return 1;
   }
-  return collisions == wanted ? 0 : 1;
+  return timed.collisions == wanted ? 0 : 1;
 }

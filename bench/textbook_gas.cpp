@@ -266,19 +266,8 @@ class Gas {
     Ball& ball = balls_[i];
     advance(ball);
     unlink(i);
-    std::uint32_t& cell = axis == 0 ? ball.cx : ball.cy;
-    double& coordinate = axis == 0 ? ball.x : ball.y;
-    if (direction == 1) {
-      if (++cell == cells_per_axis_) {
-        cell = 0;
-        coordinate -= side_;
-      }
-    } else {
-      if (cell-- == 0) {
-        cell = cells_per_axis_ - 1;
-        coordinate += side_;
-      }
-    }
+    carom::bench::step_cell(axis == 0 ? ball.cx : ball.cy, axis == 0 ? ball.x : ball.y,
+                            direction == 1, cells_per_axis_, side_);
     link(i);
   }
 
@@ -592,24 +581,18 @@ int main(int argc, char** argv) {
   textbook::Gas gas = gas_of(start);
   gas.run_collisions(static_cast<std::uint64_t>(equilibrate * static_cast<double>(n)));
   const long resident_after = resident_kib();
-  const double energy_before = gas.kinetic_energy();
-  const std::uint64_t crossings_before = gas.crossings();
-  const std::uint64_t stale_before = gas.stale();
   const auto wanted = static_cast<std::uint64_t>(per_ball * static_cast<double>(n));
-  const double cpu_start = carom::bench::cpu_seconds();
-  const std::uint64_t collisions = gas.run_collisions(wanted);
-  const double cpu = carom::bench::cpu_seconds() - cpu_start;
-  const auto count = static_cast<double>(collisions);
+  const carom::bench::TimedCollisions timed = carom::bench::timed_collisions(gas, wanted);
+  const auto count = static_cast<double>(timed.collisions);
   std::printf(
       "n=%llu eta=%.2f shuffled=%d cells=%u^2 collisions=%llu cpu_s=%.3f cpu_rate=%.0fk/s "
       "cpu_ns_per_collision=%.0f crossings_per_collision=%.3f stale_per_collision=%.3f "
       "bytes_per_ball=%.0f array_bytes_per_ball=%.0f energy_drift=%.2e\n",
       static_cast<unsigned long long>(n), eta, shuffle ? 1 : 0, gas.cells_per_axis(),
-      static_cast<unsigned long long>(collisions), cpu, count / cpu / 1e3, cpu / count * 1e9,
-      static_cast<double>(gas.crossings() - crossings_before) / count,
-      static_cast<double>(gas.stale() - stale_before) / count,
+      static_cast<unsigned long long>(timed.collisions), timed.cpu_seconds,
+      count / timed.cpu_seconds / 1e3, timed.cpu_seconds / count * 1e9,
+      timed.crossings_per_collision, timed.stale_per_collision,
       static_cast<double>(resident_after - resident_before) * 1024.0 / static_cast<double>(n),
-      static_cast<double>(gas.bytes()) / static_cast<double>(n),
-      (gas.kinetic_energy() - energy_before) / energy_before);
-  return collisions == wanted ? 0 : 1;
+      static_cast<double>(gas.bytes()) / static_cast<double>(n), timed.energy_drift);
+  return timed.collisions == wanted ? 0 : 1;
 }

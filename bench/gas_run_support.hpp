@@ -79,6 +79,15 @@ inline GasStart start_of(const carom::World& world, double side) {
   return start;
 }
 
+// Brings a disk stored at its local time t to time `now` (position + velocity·(now − t)).
+template <class Disk>
+void advance_to(Disk& disk, double now) {
+  const double dt = now - disk.t;
+  disk.x += disk.vx * dt;
+  disk.y += disk.vy * dt;
+  disk.t = now;
+}
+
 // A ball's cell along one axis, one step up or down, through the periodic box's edge: leaving the
 // last cell upward it enters cell 0 and its coordinate moves down by the box's side (and the
 // reverse), so that positions stay inside the box and inside their cells.

@@ -148,10 +148,8 @@ class Gas {
     double closest = kInfinity;
     for (std::uint32_t i = 0; i < ghost_; ++i) {
       for (std::uint32_t j = i + 1; j < ghost_; ++j) {
-        double dx = position_x(j) - position_x(i);
-        double dy = position_y(j) - position_y(i);
-        dx -= side_ * std::nearbyint(dx / side_);
-        dy -= side_ * std::nearbyint(dy / side_);
+        const double dx = nearest_image(position_x(j) - position_x(i));
+        const double dy = nearest_image(position_y(j) - position_y(i));
         closest = std::min(closest, std::sqrt(dx * dx + dy * dy));
       }
     }
@@ -167,6 +165,10 @@ class Gas {
   }
 
  private:
+  // An offset along one axis brought to its nearest image (whole box sides taken off).
+  [[nodiscard]] double nearest_image(double d) const {
+    return d - side_ * std::nearbyint(d / side_);
+  }
   [[nodiscard]] double position_x(std::uint32_t i) const {
     return balls_[i].x + balls_[i].vx * (now_ - balls_[i].t);
   }
@@ -212,12 +214,7 @@ class Gas {
     if (k < kSlots) write_slot(ball, k, ghost_);
   }
 
-  void advance(Ball& ball) const {
-    const double dt = now_ - ball.t;
-    ball.x += ball.vx * dt;
-    ball.y += ball.vy * dt;
-    ball.t = now_;
-  }
+  void advance(Ball& ball) const { carom::bench::advance_to(ball, now_); }
 
   // Crossing through `side` (0: −x, 1: +x, 2: −y, 3: +y), wrapping through the box's edge.
   void cross(std::uint32_t i, std::uint32_t side) {
@@ -235,11 +232,8 @@ class Gas {
     Ball& b = balls_[j];
     advance(a);
     advance(b);
-    double dx = b.x - a.x;
-    double dy = b.y - a.y;
-    dx -= side_ * std::nearbyint(dx / side_);
-    dy -= side_ * std::nearbyint(dy / side_);
-    carom::bench::exchange_normal_velocities(a, b, dx, dy);
+    carom::bench::exchange_normal_velocities(a, b, nearest_image(b.x - a.x),
+                                             nearest_image(b.y - a.y));
     ++a.version;
     ++b.version;
   }

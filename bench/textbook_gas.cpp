@@ -255,12 +255,7 @@ class Gas {
   }
 
   // Brings ball i to the current time.
-  void advance(Ball& ball) const {
-    const double dt = now_ - ball.t;
-    ball.x += ball.vx * dt;
-    ball.y += ball.vy * dt;
-    ball.t = now_;
-  }
+  void advance(Ball& ball) const { carom::bench::advance_to(ball, now_); }
 
   void cross(std::uint32_t i, std::uint8_t axis, std::uint8_t direction) {
     Ball& ball = balls_[i];

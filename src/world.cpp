@@ -294,8 +294,9 @@ std::size_t World::wall_count() const noexcept { return impl_->walls.size(); }
 double World::step(double dt) {
   detail::require_non_negative("World::step", "dt", dt);
   const double start = impl_->time;
-  impl_->run("World::step", start + dt, std::numeric_limits<std::uint64_t>::max());
-  return impl_->stopped ? impl_->time - start : dt;
+  impl_->run("World::step", Impl::RunGoal::time, start + dt,
+             std::numeric_limits<std::uint64_t>::max());
+  return impl_->stop_reason == StopReason::none ? dt : impl_->time - start;
 }
 
 double World::run_until(double time) {
@@ -305,16 +306,19 @@ double World::run_until(double time) {
            "must not be before the world's time " + number(impl_->time));
   }
   const double start = impl_->time;
-  impl_->run("World::run_until", time, std::numeric_limits<std::uint64_t>::max());
+  impl_->run("World::run_until", Impl::RunGoal::time, time,
+             std::numeric_limits<std::uint64_t>::max());
   return impl_->time - start;
 }
 
 std::uint64_t World::run_collisions(std::uint64_t count) {
   if (count == 0) {
     impl_->contacts.clear();
+    impl_->stop_reason = StopReason::none;
     return 0;
   }
-  return impl_->run("World::run_collisions", std::numeric_limits<double>::infinity(), count);
+  return impl_->run("World::run_collisions", Impl::RunGoal::contacts,
+                    std::numeric_limits<double>::infinity(), count);
 }
 
 std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
@@ -326,16 +330,29 @@ std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
   }
   if (count == 0) {
     impl_->contacts.clear();
+    impl_->stop_reason = StopReason::none;
     return 0;
   }
-  return impl_->run(kFunction, time_limit, count);
+  return impl_->run(kFunction, Impl::RunGoal::contacts, time_limit, count);
 }
 
 void World::set_stop_condition(std::function<bool(const ContactEvent&)> condition) {
   impl_->stop_condition = std::move(condition);
 }
 
-bool World::stopped_early() const noexcept { return impl_->stopped; }
+bool World::stopped_early() const noexcept {
+  return impl_->stop_reason == StopReason::stop_condition;
+}
+
+StopReason World::stop_reason() const noexcept { return impl_->stop_reason; }
+
+void World::request_stop() noexcept {
+  impl_->stop_requested.store(true, std::memory_order_relaxed);
+}
+
+void World::set_progress_callback(std::function<bool(const RunStatus&)> callback) {
+  impl_->progress_callback = std::move(callback);
+}
 
 std::span<const ContactEvent> World::contacts() const noexcept { return impl_->contacts; }
 

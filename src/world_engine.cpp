@@ -676,9 +676,19 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::solve_named(const detail::SlotQuery
 
 // ---- the event loop -----------------------------------------------------------------------
 
-std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t max_contacts) {
+bool World::Impl::stop_asked(const RunStatus& status) {
+  // exchange only when set: the common case stays a plain load.
+  if (stop_requested.load(std::memory_order_relaxed) &&
+      stop_requested.exchange(false, std::memory_order_relaxed)) {
+    return true;
+  }
+  return progress_callback && progress_callback(status);
+}
+
+std::uint64_t World::Impl::run(const char* function, RunGoal goal, double end,
+                               std::uint64_t max_contacts) {
   contacts.clear();
-  stopped = false;
+  stop_reason = StopReason::none;
   mover_met = false;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
   if (!events_valid) predict_all();
@@ -710,10 +720,26 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     ~DeferredFiling() { queue.defer_filing(false); }
   } deferred_filing(queue, prefetching);
   const std::uint64_t sort_after = kSortEvents * live_count + kSortMinEvents;
+  // Stop requests are looked at before the first event and then every kStopCheckEvents events.
+  static_assert(std::has_single_bit(kStopCheckEvents));
+  std::uint64_t events = 0;
   for (;;) {
+    if ((events & (kStopCheckEvents - 1)) == 0 && stop_asked({time, events, resolved})) {
+      stop_reason = StopReason::interrupted;
+      return resolved;
+    }
+    ++events;
     if (++events_since_sort > sort_after) sort_by_cell();
     const Event event = queue.top();
-    if (!(event.time <= end) || event.time == kInfinity) break;
+    if (!(event.time <= end) || event.time == kInfinity) {
+      // Reaching the time asked for is what a timed run is for; for a count of contacts, an end
+      // of the queue means none will ever come, and a finite end is the caller's limit.
+      if (goal == RunGoal::contacts) {
+        stop_reason =
+            event.time == kInfinity ? StopReason::no_more_contacts : StopReason::time_limit;
+      }
+      break;
+    }
     if (prefetching && queue.current_bucket() != lookahead.passed_bucket) look_ahead();
     time = event.time;
     const bool contact = process(event);
@@ -732,7 +758,10 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
       const bool partner_gone = event.kind == EventKind::ball_ball && !balls[event.partner].alive();
       if (!partner_gone && time_too_coarse(event)) refuse_stalled(function, event);
       if (end == kInfinity && ++without_contact >= next_proof) {
-        if (no_contact_ever()) break;
+        if (no_contact_ever()) {
+          stop_reason = StopReason::no_more_contacts;
+          break;
+        }
         next_proof *= 2;
         without_contact = 0;
       }
@@ -751,7 +780,7 @@ std::uint64_t World::Impl::run(const char* function, double end, std::uint64_t m
     }
     const bool stop = stop_condition && stop_condition(last_contact);
     if (stop || resolved == max_contacts) {
-      stopped = stop;
+      if (stop) stop_reason = StopReason::stop_condition;
       return resolved;
     }
   }

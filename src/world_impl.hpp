@@ -3,6 +3,7 @@
 // the public API with its validation in world.cpp. Design: docs/world.md.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -96,12 +97,16 @@ struct World::Impl {
   std::vector<ContactEvent> contacts;
   ContactEvent last_contact;  // the latest resolved, recorded or not (for the stop condition)
   std::function<bool(const ContactEvent&)> stop_condition;
+  std::function<bool(const RunStatus&)> progress_callback;
+  // Set by request_stop from any thread or a signal handler; cleared by the run that stops.
+  std::atomic<bool> stop_requested{false};
+  static_assert(std::atomic<bool>::is_always_lock_free, "request_stop must be signal-safe");
+  StopReason stop_reason = StopReason::none;
 
   // The flags together, so that they pad the structure once.
   bool grid_valid = false;
   bool events_valid = false;
   bool record_contacts = true;
-  bool stopped = false;
   // Whether some ball's restitution differs from def.restitution; until then contacts need not
   // read the balls' infos (a cache miss each in a large world).
   bool mixed_restitution = false;
@@ -234,9 +239,15 @@ struct World::Impl {
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
-  // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts.
-  // Throws InvalidArgument (naming `function`) when contacts at one instant do not end.
-  std::uint64_t run(const char* function, double end, std::uint64_t max_contacts);
+  // What a run was asked for: to reach a time (step, run_until), or a count of contacts
+  // (run_collisions, whose end time is a limit).
+  enum class RunGoal : std::uint8_t { time, contacts };
+  // Processes events in order until time `end` or `max_contacts` contacts; returns the contacts
+  // and leaves why it returned in stop_reason. Throws InvalidArgument (naming `function`) when
+  // contacts at one instant do not end.
+  std::uint64_t run(const char* function, RunGoal goal, double end, std::uint64_t max_contacts);
+  // Whether a stop was asked for (request_stop, or the progress callback); clears the request.
+  [[nodiscard]] bool stop_asked(const RunStatus& status);
   // True only when no contact can ever happen again, by the rules in world_no_contact.cpp;
   // false means "not proven", not "a contact will happen".
   [[nodiscard]] bool no_contact_ever() const;

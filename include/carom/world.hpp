@@ -89,6 +89,22 @@ struct ContactEvent {
   double impulse = 0.0;         // magnitude of the normal impulse
 };
 
+// Why the last step / run_until / run_collisions returned.
+enum class StopReason : std::uint8_t {
+  none,              // it did what it was asked: reached its time, or resolved `count` contacts
+  no_more_contacts,  // run_collisions: no contact will ever happen (see run_collisions)
+  time_limit,        // run_collisions(count, time_limit): the limit came before the count
+  stop_condition,    // the stop condition answered true
+  interrupted,       // request_stop(), or the progress callback answered true
+};
+
+// What a run's progress callback is told (see set_progress_callback).
+struct RunStatus {
+  double time = 0.0;          // the world's time: that of the event processed last
+  std::uint64_t events = 0;   // events processed by this run so far (contacts and cell crossings)
+  std::uint64_t contacts = 0;  // contacts resolved by this run so far
+};
+
 // What set_position does when the new place would overlap a ball or a wall.
 enum class Placement : std::uint8_t {
   refuse,        // throw carom::InvalidArgument, leaving the ball where it was
@@ -170,7 +186,26 @@ class World {
   // Stop early: after each contact the callback is asked, and if it answers true the current
   // step / run ends right after that contact, with every ball brought to that time.
   void set_stop_condition(std::function<bool(const ContactEvent&)> condition);
+  // Whether the last run ended because the stop condition fired.
   [[nodiscard]] bool stopped_early() const noexcept;
+  // Why the last run returned; none before the first.
+  [[nodiscard]] StopReason stop_reason() const noexcept;
+
+  // ---- stopping a run from outside ----
+  // Asks the run in progress (or, when none is, the next one) to stop at an event boundary: it
+  // returns within kStopCheckEvents events with every ball consistent at the time of the event
+  // processed last, stop_reason() == interrupted, and the request cleared. Continuing with the
+  // same calls then gives the same states and contacts as a run never stopped. Safe from any
+  // thread and from a signal handler: it is one store to a lock-free atomic.
+  void request_stop() noexcept;
+  // How many events a run processes at most between two looks at a stop request (about a
+  // millisecond of work): the callback below is called this often too.
+  static constexpr std::uint64_t kStopCheckEvents = 1024;
+  // Called at the start of every run and then every kStopCheckEvents events; an answer of true
+  // stops the run as request_stop does. For progress reports during long runs with few contacts,
+  // and for stop flags of the caller's own (a Ctrl-C handler's). The callback must not change the
+  // world. Not saved (a function). Empty: none.
+  void set_progress_callback(std::function<bool(const RunStatus&)> callback);
 
   // Contacts resolved by the last step / run_until / run_collisions, in the order they happened:
   // by time, then kind (ball–ball before ball–wall), then ids. Empty while recording is off.

@@ -5,6 +5,7 @@
 // presets too, where it checks the bit-identical results.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdint>
 #include <random>
 #include <thread>
@@ -89,6 +90,32 @@ TEST(WorldThreads, IndependentWorldsOnSeveralThreadsMatchTheirSerialRuns) {
     EXPECT_EQ(parallel[static_cast<std::size_t>(k)], serial[static_cast<std::size_t>(k % kScenes)])
         << "thread " << k << " (scene " << k % kScenes << ")";
   }
+}
+
+// request_stop from another thread ends a run that would never end by itself (two balls on a
+// closed orbit in a periodic cell that never meets), at an event boundary.
+TEST(WorldThreads, RequestStopFromAnotherThreadEndsARunThatNeverEnds) {
+  WorldDef def;
+  def.boundary = Boundary::periodic;
+  def.lower = {0.0, 0.0};
+  def.upper = {10.0, 10.0};
+  World world(def);
+  (void)world.add_ball({{1.0, 1.0}, {0.5, 0.5}, 1.0, 1.0, std::nullopt, 0});
+  (void)world.add_ball({{6.0, 1.0}, {-0.5, -0.5}, 1.0, 1.0, std::nullopt, 0});
+  std::atomic<bool> running{false};
+  world.set_progress_callback([&running](const RunStatus& status) {
+    if (status.events > 0) running.store(true);
+    return false;
+  });
+  std::jthread stopper([&world, &running] {
+    while (!running.load()) std::this_thread::yield();
+    world.request_stop();
+  });
+  EXPECT_EQ(world.run_collisions(1), 0U);
+  stopper.join();
+  EXPECT_EQ(world.stop_reason(), StopReason::interrupted);
+  EXPECT_GT(world.time(), 0.0);
+  EXPECT_EQ(world.audit_all_pairs(), std::nullopt);
 }
 
 // The queries keep no state: many threads at once, errors included, give the serial answers.

@@ -14,6 +14,7 @@
 #include "carom/scene.hpp"
 #include "command.hpp"
 #include "eos_command.hpp"
+#include "examples_folder.hpp"
 #include "exit_codes.hpp"
 #include "gas_command.hpp"
 #include "info_command.hpp"
@@ -69,7 +70,10 @@ int parse_and_run(int argc, char** argv) {
   CLI::App app{"carom: exact continuous collision of moving balls in 2D.", "carom"};
   app.set_version_flag("--version", std::string("carom ") + CAROM_VERSION);
   app.require_subcommand(1);
-  app.footer("Run 'carom VERB --help' for the options of a verb.");
+  app.footer(
+      "Run 'carom VERB --help' for the options of a verb.\n"
+      "Example scenes (examples/ in the verbs' help): " +
+      carom::cli::examples_folder());
   const std::vector<carom::cli::Command> commands{
       carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
       carom::cli::add_gas_command(app),   carom::cli::add_eos_command(app),

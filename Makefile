@@ -1,21 +1,27 @@
 # carom: the two commands a newcomer needs, each complete on a fresh Debian machine.
-#   make run    install what is missing, build, run the billiards break (examples/), summarise it
-#   make test   install what is missing, then everything CI checks
+#   make run    install what running needs, build the tool, run the billiards break (examples/),
+#               summarise it
+#   make test   install what CI needs, then everything CI checks
 # More: make bench (core benchmarks, optimised build), make bench-instructions (the engine's
 # instructions a collision, counted by callgrind), make fuzz (the fuzz targets, 10 minutes
 # each), make format, make lint (make lint-deep with the static analyzer), make clean.
-# Browser playground: make playground (serve it), make test-web, make bench-web.
+# Browser playground: make playground (serve it; PORT=8080), make test-web, make bench-web.
 
 SHELL := /bin/bash
 .ONESHELL:
 .SHELLFLAGS := -eu -o pipefail -c
 
-# Debian packages carom builds with. Kept in one place; `make deps` installs the missing ones.
-PACKAGES := cmake ninja-build g++ clang clang-format clang-tidy \
-            libgtest-dev libgmock-dev libbenchmark-dev \
-            nlohmann-json3-dev libcli11-dev libfmt-dev libbox2d-dev libclang-rt-14-dev
-# carom render: Cairo draws the pictures and frames (found with pkg-config); ffmpeg encodes.
-PACKAGES += libcairo2-dev pkg-config ffmpeg
+# Debian packages, kept in one place. make run installs the missing ones of RUN_PACKAGES, what
+# the release preset's carom_cli target and its run need: CLI11, nlohmann-json and fmt; Cairo,
+# found with pkg-config, draws pictures and frames; the ffmpeg program encodes animations
+# (tests/package/check_run_packages.cmake checks the list against what configuring needs).
+RUN_PACKAGES := cmake ninja-build g++ nlohmann-json3-dev libcli11-dev libfmt-dev \
+                libcairo2-dev pkg-config ffmpeg
+# make test and the rest (`make deps`) install everything CI needs as well: the second compiler
+# and its sanitizer runtimes, clang-format and clang-tidy, GoogleTest and Google Benchmark, the
+# peers.
+PACKAGES := $(RUN_PACKAGES) clang clang-format clang-tidy libclang-rt-14-dev \
+            libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev
 
 RUN_PICTURE := build/two-moving-balls.svg
 RUN_DIR := build/run
@@ -25,28 +31,42 @@ CAROM := build/release/apps/carom/carom
 FUZZER := build/fuzz/tests/fuzz/carom_scene_fuzz
 FUZZ_SMOKE_SECONDS ?= 20
 
-.PHONY: all deps run test test-long test-dev test-clang test-asan format-check bench format lint clean
+.PHONY: all deps run-deps run test test-long test-dev test-clang test-asan format-check bench format
+.PHONY: lint clean
+# make run prints what a person reads (the build's progress, the run's summary, where its files
+# are), not the recipes' source.
+.SILENT: deps run-deps run
 .PHONY: wasm playground test-web bench-web
 .PHONY: fuzz-build
 
 all: run
 
-deps:
-	missing=$$(for p in $(PACKAGES); do \
-	  dpkg-query -W -f='$${Status}\n' "$$p" 2>/dev/null | grep -q '^install ok installed$$' || echo "$$p"; \
-	done)
-	if [ -z "$$missing" ]; then exit 0; fi
-	if [ "$$(id -u)" = 0 ]; then
-	  echo "carom: installing missing Debian packages:" $$missing
-	  apt-get update -qq
-	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing
-	else
-	  echo "carom: missing Debian packages. Install them with:"
-	  echo "  sudo apt-get install -y" $$missing
-	  exit 1
-	fi
+# Installs the packages of $(1) that are missing (as root), or prints the apt-get line that does
+# and fails.
+define install-missing
+missing=$$(for p in $(1); do \
+  dpkg-query -W -f='$${Status}\n' "$$p" 2>/dev/null | grep -q '^install ok installed$$' || echo "$$p"; \
+done)
+if [ -z "$$missing" ]; then exit 0; fi
+if [ "$$(id -u)" = 0 ]; then
+  echo "carom: installing missing Debian packages:" $$missing
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing
+else
+  echo "carom: missing Debian packages. Install them with:"
+  echo "  sudo apt-get install -y" $$missing
+  exit 1
+fi
+endef
 
-run: deps
+deps:
+	$(call install-missing,$(PACKAGES))
+
+run-deps:
+	$(call install-missing,$(RUN_PACKAGES))
+
+run: run-deps
+	echo "Building the carom tool (preset release, in build/release):"
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_cli
 	mkdir -p $(RUN_DIR)
@@ -63,6 +83,7 @@ run: deps
 	$(CAROM) render examples/billiards.json --animate $(RUN_ANIMATION) --until 2.5 --trails 0.25
 	echo "The billiards break, animated:               $(RUN_ANIMATION) (open it in a browser)"
 	echo "More scenes in examples/; try: $(CAROM) run examples/periodic-gas.json --until 1 --stats"
+	echo "Install the tool, library and examples: cmake --install build/release --prefix ~/.local"
 
 # The browser tests need chromium (and emscripten, node-acorn, npm); .ci/run installs them.
 TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
@@ -265,9 +286,11 @@ wasm:
 $(WEB_NODE_MODULES): web/package.json web/package-lock.json
 	cd web && npm ci --no-audit --no-fund
 
-# Serves the playground on http://127.0.0.1:8080 with web/serve.mjs (Node's standard library only).
+# Serves the playground on http://127.0.0.1:$(PORT) with web/serve.mjs (Node's standard library
+# only): make playground PORT=8000 when 8080 is taken.
+PORT ?= 8080
 playground: wasm
-	node web/serve.mjs $(WEB_SITE) 8080
+	node web/serve.mjs $(WEB_SITE) $(PORT)
 
 # End-to-end tests in Debian's chromium; screenshots go to build/web-test-output/. The native
 # carom CLI is the reference the "Two moving balls" page is compared with: the dev build's, which

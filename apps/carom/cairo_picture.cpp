@@ -16,7 +16,10 @@ constexpr double kFontShare = 1.0 / 40.0;       // font size per pixel of width
 constexpr double kLineShare = 1.0 / 320.0;      // a thin line's width per pixel of width
 constexpr double kTitleBandFonts = 3.4;         // title and subtitle lines with some air
 constexpr double kLegendBandFonts = 3.2;        // the colour bar and its labels
-constexpr double kMarginFonts = 0.6;            // around the view
+constexpr double kMarginFonts = 2.0;            // blank around the view, as in the SVG pictures
+constexpr double kViewGapFonts = 0.6;           // between the subtitle and the view
+constexpr double kTextLeftFonts = 1.2;          // the title's and the legend's left edge
+constexpr double kLegendGapFonts = 1.0;         // between the view and the legend
 constexpr double kTallestAspect = 2.0;          // the view is never drawn taller than this × width
 constexpr double kLegendBarFonts = 14.0;        // the colour bar's length
 constexpr double kLegendBarHeightFonts = 0.8;   // and its height
@@ -88,15 +91,30 @@ struct Painter {
     const double head = std::min(kHeadLengthLines * line, len / 1.6);
     const Vec2 base = to - direction * head;
     const Vec2 side = left_normal(direction) * (kHeadHalfWidthShare * head);
-    set_colour(cr, a.colour);
-    cairo_set_line_width(cr, kArrowWidth * line);
-    cairo_move_to(cr, from.x, from.y);
-    cairo_line_to(cr, base.x + direction.x * 0.5 * head, base.y + direction.y * 0.5 * head);
+    const Vec2 shaft_end = base + direction * (0.5 * head);
+    const auto shaft = [&](double width) {
+      cairo_set_line_width(cr, width);
+      cairo_move_to(cr, from.x, from.y);
+      cairo_line_to(cr, shaft_end.x, shaft_end.y);
+      cairo_stroke(cr);
+    };
+    const auto head_path = [&] {
+      cairo_move_to(cr, to.x, to.y);
+      cairo_line_to(cr, base.x + side.x, base.y + side.y);
+      cairo_line_to(cr, base.x - side.x, base.y - side.y);
+      cairo_close_path(cr);
+    };
+    // The outline first: the same shaft and head, wider on each side.
+    const double outline = kOutlineWidth * line;
+    set_colour(cr, a.outline);
+    shaft((kArrowWidth * line) + 2.0 * outline);
+    head_path();
+    cairo_fill_preserve(cr);
+    cairo_set_line_width(cr, 2.0 * outline);
     cairo_stroke(cr);
-    cairo_move_to(cr, to.x, to.y);
-    cairo_line_to(cr, base.x + side.x, base.y + side.y);
-    cairo_line_to(cr, base.x - side.x, base.y - side.y);
-    cairo_close_path(cr);
+    set_colour(cr, a.colour);
+    shaft(kArrowWidth * line);
+    head_path();
     cairo_fill(cr);
   }
 
@@ -110,8 +128,8 @@ struct Painter {
 
   void legend(const SpeedLegend& legend) const {
     const double font = layout.font_size;
-    const double x = kMarginFonts * font * 2.0;
-    const double y = layout.bottom + kMarginFonts * font + 0.6 * font;
+    const double x = kTextLeftFonts * font;
+    const double y = layout.bottom + kLegendGapFonts * font;
     const double bar = std::min(kLegendBarFonts * font, layout.width * 0.5);
     const double height = kLegendBarHeightFonts * font;
     cairo_pattern_t* gradient = cairo_pattern_create_linear(x, 0.0, x + bar, 0.0);
@@ -150,9 +168,9 @@ ImageLayout layout_image(const ViewBox& view, int width, bool legend, bool even_
   layout.scale = std::min((w - 2.0 * margin) / view.width(), kTallestAspect * w / view.height());
   const double view_height = view.height() * layout.scale;
   layout.left = (w - view.width() * layout.scale) / 2.0;
-  layout.bottom = layout.title_band + view_height;
-  const double legend_band = legend ? kLegendBandFonts * layout.font_size : 0.0;
-  layout.height = static_cast<int>(std::ceil(layout.bottom + margin + legend_band));
+  layout.bottom = layout.title_band + kViewGapFonts * layout.font_size + view_height;
+  const double below = legend ? (kLegendGapFonts + kLegendBandFonts) * layout.font_size : margin;
+  layout.height = static_cast<int>(std::ceil(layout.bottom + below));
   if (even_size) layout.height += layout.height % 2;
   return layout;
 }
@@ -198,25 +216,30 @@ void paint_picture(CairoImage& image, const ImageLayout& layout, const ScenePict
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
 
-  for (const PictureStroke& s : picture.boundary) painter.stroke(s);
-  cairo_save(cr);
-  if (picture.clip) {
-    const Vec2 a = painter.at(picture.clip->lower);
-    const Vec2 b = painter.at(picture.clip->upper);
+  // Nothing outside the view: a view the user chose (--view) may cut through the scene.
+  const auto clip_to = [&](const ViewBox& box) {
+    const Vec2 a = painter.at(box.lower);
+    const Vec2 b = painter.at(box.upper);
     cairo_rectangle(cr, a.x, b.y, b.x - a.x, a.y - b.y);
     cairo_clip(cr);
-  }
+  };
+  cairo_save(cr);
+  clip_to(picture.view);
+  for (const PictureStroke& s : picture.boundary) painter.stroke(s);
+  cairo_save(cr);
+  if (picture.clip) clip_to(*picture.clip);
   for (const PictureStroke& s : picture.trails) painter.stroke(s);
   for (const PictureDisc& d : picture.pockets) painter.disc(d);
   for (const PictureStroke& s : picture.walls) painter.stroke(s);
   for (const PictureDisc& d : picture.balls) painter.disc(d);
   cairo_restore(cr);
   for (const PictureArrow& a : picture.arrows) painter.arrow(a);
+  cairo_restore(cr);
 
   set_colour(cr, {0.0, 0.0, 0.0});
   const double font = layout.font_size;
-  painter.text({kMarginFonts * font * 2.0, 1.4 * font}, 1.2 * font, true, picture.title);
-  painter.text({kMarginFonts * font * 2.0, 2.8 * font}, font, false, picture.subtitle);
+  painter.text({kTextLeftFonts * font, 1.4 * font}, 1.2 * font, true, picture.title);
+  painter.text({kTextLeftFonts * font, 2.8 * font}, font, false, picture.subtitle);
   if (picture.legend && layout.legend) painter.legend(*picture.legend);
 
   const cairo_status_t status = cairo_status(cr);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace carom::cli {
@@ -11,9 +12,8 @@ namespace {
 constexpr double kLabelGap = 0.9 * kFontSize;
 // A direction within this share of horizontal puts text beside its point, not above or below.
 constexpr double kSidewaysShare = 0.4;
-// A label's extent, in font sizes: the average width of a bold character, and the heights of
-// capitals above the baseline and of descenders below it.
-constexpr double kBoldCharWidth = 0.65;
+// A label's extent, in font sizes: the heights of capitals above the baseline and of descenders
+// below it.
 constexpr double kCapHeight = 0.73;
 constexpr double kDescent = 0.24;
 
@@ -71,6 +71,31 @@ std::size_t count_characters(std::string_view utf8) {
   return static_cast<std::size_t>(std::count_if(utf8.begin(), utf8.end(), [](char c) {
     return (static_cast<unsigned char>(c) & kContinuationMask) != kContinuationBits;
   }));
+}
+
+std::vector<std::string> wrap_words(std::string_view text, std::size_t most) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t space = std::min(text.find(' ', start), text.size());
+    const std::string_view word = text.substr(start, space - start);
+    start = space + 1;
+    if (word.empty()) continue;
+    if (!line.empty() && count_characters(line) + 1 + count_characters(word) > most) {
+      lines.push_back(std::move(line));
+      line.clear();
+    }
+    if (!line.empty()) line += ' ';
+    line += word;
+  }
+  if (!line.empty()) lines.push_back(std::move(line));
+  return lines;
+}
+
+std::size_t characters_in(double width, double font_size, bool bold) {
+  const double fit = width / ((bold ? kBoldCharWidth : kAverageCharWidth) * font_size);
+  return fit >= 1.0 ? static_cast<std::size_t>(fit) : 1;
 }
 
 PlacedText place_text(Vec2 at, Vec2 away, std::string_view text) {

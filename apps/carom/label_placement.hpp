@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,6 +17,10 @@ namespace carom::cli {
 inline constexpr double kBaselineDrop = 0.35;
 // The white outline behind label text, in font sizes: wide enough to part text from a line.
 inline constexpr double kHaloWidth = 0.25;
+// The average width of a character, in font sizes, of plain and of bold text in a sans-serif
+// face: enough to size a legend's columns and to wrap a line before the picture's edge.
+inline constexpr double kAverageCharWidth = 0.6;
+inline constexpr double kBoldCharWidth = 0.65;
 
 // An axis-aligned box on the screen (pixels, y down).
 struct TextBox {
@@ -36,6 +41,12 @@ struct PlacedText {
 
 // Characters, not bytes, of UTF-8 text: labels use a few non-ASCII letters (′, −).
 [[nodiscard]] std::size_t count_characters(std::string_view utf8);
+
+// text broken at spaces into lines of at most `most` characters; a word longer than that gets a
+// line of its own. Empty text gives no lines.
+[[nodiscard]] std::vector<std::string> wrap_words(std::string_view text, std::size_t most);
+// How many characters of text of this font size (and weight) fit in width.
+[[nodiscard]] std::size_t characters_in(double width, double font_size, bool bold);
 
 // What is already drawn on a panel, in screen coordinates, for labels to keep clear of.
 class Obstacles {

@@ -17,7 +17,8 @@ double frame_time(double until, long long frames, long long k) {
   return until * (static_cast<double>(k) / static_cast<double>(frames - 1));
 }
 
-// What the first run learns: where the balls go and how fast they get.
+// What the first run learns: where the balls go (their centres at contacts too, where trails
+// bend) and how fast they get.
 struct RunSurvey {
   ViewBox balls_seen;
   double top_speed = 0.0;
@@ -26,10 +27,13 @@ struct RunSurvey {
 RunSurvey survey(const Scene& scene, double until, long long frames) {
   SceneWorld scene_world = make_world(scene);
   RunSurvey result;
+  std::vector<ContactEvent> contacts;
   for (long long k = 0; k < frames; ++k) {
     const double target = frame_time(until, frames, k);
-    step_scene(scene_world, target - scene_world.world.time());
+    contacts.clear();
+    step_scene(scene_world, target - scene_world.world.time(), &contacts);
     result.balls_seen.add(balls_box(scene_world));
+    result.balls_seen.add(contact_centres(scene_world, contacts));
     result.top_speed = std::max(result.top_speed, top_speed(scene_world));
   }
   return result;
@@ -49,11 +53,8 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
   style.mode = request.mode;
   style.top_speed = seen.top_speed > 0.0 ? seen.top_speed : 1.0;
   style.name_colours = request.name_colours;
-  style.view = picture_view(scene, seen.balls_seen);
+  frame_picture(style, scene, seen.balls_seen, request.view, request.arrows);
   style.title = request.title;
-  if (request.arrows) {
-    style.arrow_seconds = arrow_seconds(style.view, style.top_speed);
-  }
   const ImageLayout layout =
       layout_image(style.view, request.width, request.mode == ColourMode::speed, true);
   CairoImage image(layout.width, layout.height);

@@ -9,6 +9,7 @@
 #include "ball_colours.hpp"
 #include "carom/scene.hpp"
 #include "ffmpeg_pipe.hpp"
+#include "view_box.hpp"
 
 namespace carom::cli {
 
@@ -22,7 +23,8 @@ struct AnimationRequest {
   ColourMode mode = ColourMode::speed;
   std::vector<Rgb> name_colours;  // name mode
   bool arrows = false;
-  double trail_seconds = 0.0;  // 0: no trails
+  std::optional<ViewBox> view;  // the part of the plane to show (--view); else the whole run's
+  double trail_seconds = 0.0;   // 0: no trails
   std::string title;
 };
 

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "atomic_file.hpp"
 #include "ball_colours.hpp"
@@ -25,6 +27,8 @@
 #include "scene_svg.hpp"
 #include "trail_recorder.hpp"
 #include "usage_error.hpp"
+#include "vector_args.hpp"
+#include "view_box.hpp"
 
 namespace carom::cli {
 namespace {
@@ -49,6 +53,7 @@ struct RenderOptions {
   std::string trails;
   std::string plot;
   std::string width;
+  std::optional<std::string> view;  // given, even as "", or not
 };
 
 enum class PictureFormat { svg, png };
@@ -64,6 +69,7 @@ struct RenderRequest {
   std::optional<ColourMode> mode;  // nothing: by name if the scene gives colours, else by speed
   double trails = 0.0;
   std::optional<int> width;
+  std::optional<ViewBox> view;  // --view: the part of the plane to show, instead of the scene's
   std::string ffmpeg;
 };
 
@@ -79,6 +85,21 @@ double parse_time(std::string_view option, const std::string& text, std::string_
   const double t = parse_finite_number(text, value);
   if (t < 0.0) reject(value, "a time must be >= 0");
   return t;
+}
+
+// "XMIN,YMIN,XMAX,YMAX": a box of positive width and height, small enough that its sides are
+// finite numbers.
+ViewBox parse_view(const std::string& text) {
+  constexpr std::string_view kForm = "XMIN,YMIN,XMAX,YMAX";
+  const std::vector<double> n = parse_number_list("--view", text, kForm);
+  const OptionValue value{"--view", text, kForm};
+  if (!(n[0] < n[2])) reject(value, "XMIN must be less than XMAX");
+  if (!(n[1] < n[3])) reject(value, "YMIN must be less than YMAX");
+  const ViewBox view{{n[0], n[1]}, {n[2], n[3]}};
+  if (!std::isfinite(view.width()) || !std::isfinite(view.height())) {
+    reject(value, "the box is too large to draw");
+  }
+  return view;
 }
 
 RenderRequest parse(const RenderOptions& o) {
@@ -156,6 +177,7 @@ RenderRequest parse(const RenderOptions& o) {
     r.trails = parse_finite_number(o.trails, value);
     if (!(r.trails > 0.0)) reject(value, "must be > 0");
   }
+  if (o.view) r.view = parse_view(*o.view);
   if (!o.width.empty()) {
     const OptionValue value{"--width", o.width, "a whole number of pixels from 64 to 8192"};
     const double w = parse_finite_number(o.width, value);
@@ -220,11 +242,10 @@ void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequ
   const double top = top_speed(scene_world);
   style.top_speed = top > 0.0 ? top : 1.0;
   style.name_colours = name_colours;
-  style.view = picture_view(scene, balls_box(scene_world));
+  ViewBox seen = balls_box(scene_world);
+  if (trails) seen.add(trails->extent(scene_world.time()));
+  frame_picture(style, scene, seen, r.view, o.arrows);
   style.title = std::filesystem::path(o.scene).filename().string();
-  if (o.arrows) {
-    style.arrow_seconds = arrow_seconds(style.view, style.top_speed);
-  }
   if (trails) style.trails = &*trails;
   const ScenePicture picture = draw_scene(scene_world, style);
 
@@ -275,6 +296,7 @@ int run(const RenderOptions& o) {
     request.mode = mode;
     request.name_colours = name_colours;
     request.arrows = o.arrows;
+    request.view = r.view;
     request.trail_seconds = r.trails;
     request.title = title;
     const AnimationResult result = render_animation(scene, request);
@@ -314,6 +336,7 @@ Command add_render_command(CLI::App& app) {
       "  carom render examples/billiards.json --at 0.5 --out break.png\n"
       "  carom render examples/billiards.json --animate break.gif --until 2 --fps 25\n"
       "  carom render examples/pinball.json --at 1 --arrows --trails 0.5 --out pinball.svg\n"
+      "  carom render examples/billiards.json --at 1 --view 0,0,1.4,1.4 --out corner.png\n"
       "  carom render examples/box-of-1000.json --plot energy --until 10 --out energy.svg");
 
   auto o = std::make_shared<RenderOptions>();
@@ -342,6 +365,11 @@ Command add_render_command(CLI::App& app) {
       ->add_option("--width", o->width,
                    "Image width in pixels (default 960 for PNG, 640 for animations)")
       ->type_name("PIXELS");
+  render
+      ->add_option_function<std::string>(
+          "--view", [o](const std::string& text) { o->view = text; },
+          "Show this box of the plane (scene units) instead of the whole scene")
+      ->type_name("XMIN,YMIN,XMAX,YMAX");
   return {render, [o] { return run_reporting_errors(*o); }};
 }
 

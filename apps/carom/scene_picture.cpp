@@ -21,6 +21,10 @@ constexpr Rgb kWallColour = rgb_from_hex(0x202020);
 constexpr Rgb kCellColour = rgb_from_hex(0x808080);
 constexpr Rgb kPocketColour = rgb_from_hex(0x303030);
 constexpr Rgb kArrowColour = rgb_from_hex(0xc00000);
+constexpr Rgb kArrowOutline = rgb_from_hex(0xffffff);
+// The fastest ball's arrow (at the top speed) is this share of the view's longer side: long
+// enough to read, short enough not to cross the picture.
+constexpr double kArrowShare = 0.1;
 // The top of the speed scale is the speed 99 % of the balls do not exceed, so that one fast ball
 // does not squeeze everyone else into the dark end; faster balls take the top colour.
 constexpr double kTopSpeedShare = 0.99;
@@ -105,8 +109,18 @@ ViewBox balls_box(const SceneWorld& scene_world) {
 }
 
 double arrow_seconds(const ViewBox& view, double top_speed) {
-  constexpr double kArrowShare = 0.1;
   return kArrowShare * std::max(view.width(), view.height()) / top_speed;
+}
+
+void frame_picture(PictureStyle& style, const Scene& scene, const ViewBox& balls_seen,
+                   const std::optional<ViewBox>& fixed, bool arrows) {
+  style.view = fixed ? *fixed : picture_view(scene, balls_seen);
+  if (!arrows) return;
+  style.arrow_seconds = arrow_seconds(style.view, style.top_speed);
+  if (fixed) return;
+  const double reach = kArrowShare * std::max(style.view.width(), style.view.height());
+  style.view.add(style.view.lower, reach);
+  style.view.add(style.view.upper, reach);
 }
 
 ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style) {
@@ -158,7 +172,7 @@ ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style
     }
     if (style.arrow_seconds && !is_immovable(scene.balls[i])) {
       const Vec2 tip = position + velocity * *style.arrow_seconds;
-      if (tip != position) picture.arrows.push_back({position, tip, kArrowColour});
+      if (tip != position) picture.arrows.push_back({position, tip, kArrowColour, kArrowOutline});
     }
   }
 

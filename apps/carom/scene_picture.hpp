@@ -32,10 +32,12 @@ struct PictureStroke {
   bool dashed = false;
 };
 
+// An arrow over a band of its outline colour, so that it shows on a ball of any colour.
 struct PictureArrow {
   Vec2 from;
   Vec2 to;
   Rgb colour;
+  Rgb outline;
 };
 
 // The colour scale of balls drawn by speed: 0 at one end, top_speed (and faster) at the other.
@@ -47,7 +49,7 @@ struct SpeedLegend {
 struct ScenePicture {
   std::string title;            // the scene file's name
   std::string subtitle;         // the time and what is drawn
-  ViewBox view;                 // what to show, margins included
+  ViewBox view;                 // what to show, margins included; nothing is drawn outside it
   std::optional<ViewBox> clip;  // the periodic cell, to clip wrapped copies to
   // In drawing order.
   std::vector<PictureStroke> boundary;  // the box (solid) or periodic cell (dashed)
@@ -72,8 +74,15 @@ struct PictureStyle {
 };
 
 // The view of a whole picture or animation: static_view, plus for an open world the balls in
-// `balls_seen` (wherever they were in the frames), with a margin.
+// `balls_seen` (wherever they were in the frames, and their trails), with a margin.
 [[nodiscard]] ViewBox picture_view(const Scene& scene, const ViewBox& balls_seen);
+
+// Sets style.view and style.arrow_seconds (with arrows; style.top_speed set first). A `fixed`
+// view (--view) is shown as given. Otherwise the view is picture_view(scene, balls_seen), and
+// with arrows it grows on every side by the length of the top speed's arrow, so that the arrows
+// of balls near its edge stay in the picture.
+void frame_picture(PictureStyle& style, const Scene& scene, const ViewBox& balls_seen,
+                   const std::optional<ViewBox>& fixed, bool arrows);
 
 // The top of the speed scale now: the 99th percentile of the movable balls' speeds (the
 // fastest ball's speed when there are fewer than 100), 0 when none moves.

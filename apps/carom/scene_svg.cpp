@@ -36,6 +36,7 @@ std::string scene_svg(const ScenePicture& picture, std::optional<double> arrow_s
   SvgFigure figure;
   figure.heading(picture.title);
   figure.heading(picture.subtitle);
+  figure.view(picture.view.lower, picture.view.upper);
   // Box sides one by one, so each wall is one element a reader (or a test) can count.
   for (const PictureStroke& side : picture.boundary) {
     if (side.dashed) {
@@ -51,7 +52,8 @@ std::string scene_svg(const ScenePicture& picture, std::optional<double> arrow_s
   for (const PictureStroke& wall : picture.walls) add_stroke(figure, wall);
   for (const PictureDisc& ball : picture.balls) add_disc(figure, ball);
   for (const PictureArrow& arrow : picture.arrows) {
-    figure.arrow(arrow.from, arrow.to, Pen{hex_colour(arrow.colour), 1.0});
+    figure.arrow(arrow.from, arrow.to, Pen{hex_colour(arrow.colour), 1.0, false},
+                 hex_colour(arrow.outline));
   }
 
   if (picture.legend) {

@@ -100,7 +100,7 @@ void svg_polyline(std::string& out, std::span<const Vec2> points, const Pen& pen
 
 // The head is a filled triangle drawn here rather than an SVG marker: a marker cannot take the
 // line's colour in SVG 1.1, and the line's end would poke out beside the marker's tip.
-void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen) {
+void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen, std::string_view outline) {
   const double len = distance(from, to);
   if (!(len > 0.0)) return;
   const Vec2 direction = (to - from) / len;
@@ -109,10 +109,21 @@ void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen) {
   const Vec2 base = to - direction * head_length;
   const Vec2 side = left_normal(direction) * (kHeadHalfWidthShare * head_length);
   // The shaft stops inside the head, so neither a gap nor a blunt line end shows at the tip.
-  svg_line(out, from, base + direction * (0.5 * head_length), pen);
-  out += fmt::format(R"(<path d="M{},{} L{},{} L{},{} Z" fill="{}"/>)", svg_number(to.x),
-                     svg_number(to.y), svg_number(base.x + side.x), svg_number(base.y + side.y),
-                     svg_number(base.x - side.x), svg_number(base.y - side.y), pen.colour);
+  const Vec2 shaft_end = base + direction * (0.5 * head_length);
+  const std::string head = fmt::format("M{},{} L{},{} L{},{} Z", svg_number(to.x), svg_number(to.y),
+                                       svg_number(base.x + side.x), svg_number(base.y + side.y),
+                                       svg_number(base.x - side.x), svg_number(base.y - side.y));
+  if (!outline.empty()) {
+    // The same shaft and head, wider by the outline on each side, underneath.
+    svg_line(out, from, shaft_end,
+             Pen{std::string(outline), pen.width + 2.0 * kOutlineWidth, false});
+    out += fmt::format(
+        R"(<path d="{}" fill="{}" stroke="{}" stroke-width="{}" stroke-linejoin="round"/>)", head,
+        outline, outline, svg_number(2.0 * kOutlineWidth * kLineWidth));
+    out += '\n';
+  }
+  svg_line(out, from, shaft_end, pen);
+  out += fmt::format(R"(<path d="{}" fill="{}"/>)", head, pen.colour);
   out += '\n';
 }
 

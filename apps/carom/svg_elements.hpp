@@ -24,6 +24,9 @@ inline constexpr double kLineWidth = kPictureSide / 320.0;  // thin, yet visible
 inline constexpr double kFontSize = kPictureSide / 40.0;    // readable, small beside the balls
 // An arrow head's half width, as a share of its length: a slim head (the PNG pictures too).
 inline constexpr double kHeadHalfWidthShare = 0.4;
+// An arrow's outline on each side, in line widths (the PNG pictures too): a thin band, enough to
+// part the arrow from a ball of its own colour.
+inline constexpr double kOutlineWidth = 1.0;
 
 enum class TextAnchor { kStart, kMiddle, kEnd };
 
@@ -33,8 +36,10 @@ void svg_circle(std::string& out, Vec2 center, double radius, const Pen& pen,
 void svg_line(std::string& out, Vec2 from, Vec2 to, const Pen& pen);
 // Lines joining consecutive points, as one <polyline> element.
 void svg_polyline(std::string& out, std::span<const Vec2> points, const Pen& pen);
-// A line with a head at `to`; nothing for a zero-length arrow.
-void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen);
+// A line with a head at `to`; nothing for a zero-length arrow. With an outline colour the arrow
+// is drawn over a band of that colour, kOutlineWidth wider on each side, so that it shows on a
+// fill of its own colour.
+void svg_arrow(std::string& out, Vec2 from, Vec2 to, const Pen& pen, std::string_view outline = {});
 // A small filled dot: a point, not a ball.
 void svg_dot(std::string& out, Vec2 at, std::string_view colour);
 // baseline is where the text's baseline meets its anchor.

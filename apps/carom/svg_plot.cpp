@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
+#include "label_placement.hpp"
 #include "readable_number.hpp"
 #include "svg_elements.hpp"
 #include "value_range.hpp"
@@ -17,7 +20,11 @@ constexpr double kWidth = 760.0;
 constexpr double kHeight = 460.0;
 constexpr double kLeft = 96.0;  // room for the y ticks' labels and the axis name
 constexpr double kRight = 24.0;
-constexpr double kTop = 78.0;  // title and subtitle
+constexpr double kTop = 78.0;  // a title and a subtitle of one line each
+constexpr double kPlotTitleSize = 1.2 * kFontSize;
+constexpr double kPlotSubtitleSize = 0.875 * kFontSize;
+constexpr double kPlotTitleLine = 1.25 * kPlotTitleSize;  // baseline to baseline
+constexpr double kPlotSubtitleLine = 1.3 * kPlotSubtitleSize;
 constexpr double kBottom = 64.0;
 constexpr int kTicks = 6;
 constexpr double kPad = 1.5 * kFontSize;
@@ -76,21 +83,40 @@ std::string plot_svg(const TimePlotSpec& spec) {
   if (xr.empty() || !(xr.high > xr.low))
     xr = {xr.empty() ? 0.0 : xr.low, (xr.empty() ? 0.0 : xr.low) + 1.0};
   const ValueRange yr = y_range(spec);
+  // The title and subtitle wrap at spaces to stay inside the picture; each line beyond the first
+  // moves the plot down, and the picture grows as much.
+  const std::vector<std::string> title =
+      wrap_words(spec.title, characters_in(kWidth - 2.0 * kPad, kPlotTitleSize, true));
+  const std::vector<std::string> subtitle =
+      wrap_words(spec.subtitle, characters_in(kWidth - 2.0 * kPad, kPlotSubtitleSize, false));
+  const auto extra_lines = [](const std::vector<std::string>& lines) {
+    return lines.size() > 1 ? static_cast<double>(lines.size() - 1) : 0.0;
+  };
+  const double title_extra = extra_lines(title) * kPlotTitleLine;
+  const double extra = title_extra + extra_lines(subtitle) * kPlotSubtitleLine;
+  const double top = kTop + extra;
+  const double height = kHeight + extra;
   const double plot_w = kWidth - kLeft - kRight;
   const double plot_h = kHeight - kTop - kBottom;
   const auto at = [&](Vec2 p) {
     return Vec2{kLeft + (p.x - xr.low) / (xr.high - xr.low) * plot_w,
-                kTop + plot_h - (p.y - yr.low) / (yr.high - yr.low) * plot_h};
+                top + plot_h - (p.y - yr.low) / (yr.high - yr.low) * plot_h};
   };
 
   std::string body;
-  svg_text(body, {kPad, 1.6 * kFontSize}, TextAnchor::kStart, 1.2 * kFontSize, true, spec.title);
-  svg_text(body, {kPad, 3.0 * kFontSize}, TextAnchor::kStart, 0.875 * kFontSize, false,
-           spec.subtitle);
+  for (std::size_t k = 0; k < title.size(); ++k) {
+    svg_text(body, {kPad, 1.6 * kFontSize + static_cast<double>(k) * kPlotTitleLine},
+             TextAnchor::kStart, kPlotTitleSize, true, title[k]);
+  }
+  for (std::size_t k = 0; k < subtitle.size(); ++k) {
+    svg_text(body,
+             {kPad, 3.0 * kFontSize + title_extra + static_cast<double>(k) * kPlotSubtitleLine},
+             TextAnchor::kStart, kPlotSubtitleSize, false, subtitle[k]);
+  }
 
   for (const double t : round_ticks(xr.low, xr.high, kTicks)) {
     const Vec2 bottom = at({t, yr.low});
-    svg_line(body, {bottom.x, kTop}, {bottom.x, kTop + plot_h}, kGridPen);
+    svg_line(body, {bottom.x, top}, {bottom.x, top + plot_h}, kGridPen);
     svg_line(body, bottom, bottom + Vec2{0.0, kTickLength}, kAxisPen);
     svg_text(body, bottom + Vec2{0.0, kTickLength + kFontSize}, TextAnchor::kMiddle,
              0.875 * kFontSize, false, readable(t));
@@ -102,12 +128,12 @@ std::string plot_svg(const TimePlotSpec& spec) {
     svg_text(body, left + Vec2{-kTickLength - 3.0, 0.35 * kFontSize}, TextAnchor::kEnd,
              0.875 * kFontSize, false, readable(t));
   }
-  svg_line(body, {kLeft, kTop + plot_h}, {kLeft + plot_w, kTop + plot_h}, kAxisPen);
-  svg_line(body, {kLeft, kTop}, {kLeft, kTop + plot_h}, kAxisPen);
-  svg_text(body, {kLeft + plot_w / 2.0, kHeight - 0.8 * kFontSize}, TextAnchor::kMiddle, kFontSize,
+  svg_line(body, {kLeft, top + plot_h}, {kLeft + plot_w, top + plot_h}, kAxisPen);
+  svg_line(body, {kLeft, top}, {kLeft, top + plot_h}, kAxisPen);
+  svg_text(body, {kLeft + plot_w / 2.0, height - 0.8 * kFontSize}, TextAnchor::kMiddle, kFontSize,
            false, spec.x_label);
   body += fmt::format(R"svg(<g transform="translate({},{}) rotate(-90)">)svg",
-                      svg_number(kFontSize * 1.2), svg_number(kTop + plot_h / 2.0));
+                      svg_number(kFontSize * 1.2), svg_number(top + plot_h / 2.0));
   svg_text(body, {0.0, 0.0}, TextAnchor::kMiddle, kFontSize, false, spec.y_label);
   body += "</g>\n";
 
@@ -122,7 +148,7 @@ std::string plot_svg(const TimePlotSpec& spec) {
   // The legend, top right inside the plot.
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const TimePlotSeries& s = spec.series[i];
-    const double y = kTop + kLegendRow * (static_cast<double>(i) + 1.0);
+    const double y = top + kLegendRow * (static_cast<double>(i) + 1.0);
     const double x = kLeft + plot_w - 12.0 * kFontSize;
     svg_line(body, {x, y - 0.3 * kFontSize}, {x + kLegendLine, y - 0.3 * kFontSize},
              Pen{s.colour, 1.0, false});
@@ -134,7 +160,7 @@ std::string plot_svg(const TimePlotSpec& spec) {
   out += fmt::format(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="{0}" height="{1}" viewBox="0 0 {0} {1}" )"
       R"(font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)",
-      svg_number(kWidth), svg_number(kHeight));
+      svg_number(kWidth), svg_number(height));
   out += "\n<title>" + escape_xml(spec.title) + "</title>\n";
   out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out += body;

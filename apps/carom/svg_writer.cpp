@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace carom::cli {
 namespace {
@@ -18,11 +21,10 @@ constexpr double kMargin = 3.0 * kFontSize;   // around a picture: room for labe
 // Above a panel's caption: a blank line's worth, so each panel reads as its own part.
 constexpr double kCaptionSpace = 2.0 * kLineSpacing * kFontSize;
 // Legend layout, in legend font sizes: the mark's width, the space before the text and after
-// it, the width of an average character (to size the columns) and the radius of a disc mark.
+// it, and the radius of a disc mark.
 constexpr double kLegendMarkWidth = 2.6;
 constexpr double kLegendTextGap = 0.6;
 constexpr double kLegendColumnGap = 1.0;
-constexpr double kAverageCharWidth = 0.6;
 constexpr double kLegendDiscRadius = 0.45;
 // A short legend reads best as one column; a long one in two keeps the figure from growing tall.
 constexpr std::size_t kLegendOneColumnMost = 4;
@@ -86,7 +88,14 @@ SvgFigure::Panel& SvgFigure::current_panel() {
   return panels_.back();
 }
 
-void SvgFigure::panel(std::string caption) { panels_.push_back({std::move(caption), {}, {}}); }
+void SvgFigure::panel(std::string caption) {
+  panels_.push_back({std::move(caption), {}, {}, std::nullopt});
+}
+
+void SvgFigure::view(Vec2 lower, Vec2 upper) {
+  if (!is_finite(lower) || !is_finite(upper) || !(lower.x < upper.x && lower.y < upper.y)) return;
+  current_panel().shown = Shown{lower, upper};
+}
 
 void SvgFigure::circle(Vec2 center, double radius, const Pen& pen, std::string fill) {
   if (!is_finite(center) || !std::isfinite(radius)) return;
@@ -95,7 +104,7 @@ void SvgFigure::circle(Vec2 center, double radius, const Pen& pen, std::string f
 
 void SvgFigure::line(Vec2 from, Vec2 to, const Pen& pen) {
   if (!is_finite(from) || !is_finite(to)) return;
-  current_panel().shapes.emplace_back(Line{from, to, pen, false});
+  current_panel().shapes.emplace_back(Line{from, to, pen, false, ""});
 }
 
 void SvgFigure::polyline(std::vector<Vec2> points, const Pen& pen) {
@@ -104,9 +113,9 @@ void SvgFigure::polyline(std::vector<Vec2> points, const Pen& pen) {
   current_panel().shapes.emplace_back(Polyline{std::move(points), pen});
 }
 
-void SvgFigure::arrow(Vec2 from, Vec2 to, const Pen& pen) {
+void SvgFigure::arrow(Vec2 from, Vec2 to, const Pen& pen, std::string outline) {
   if (from == to || !is_finite(from) || !is_finite(to)) return;
-  current_panel().shapes.emplace_back(Line{from, to, pen, true});
+  current_panel().shapes.emplace_back(Line{from, to, pen, true, std::move(outline)});
 }
 
 void SvgFigure::dot(Vec2 at, std::string colour) {
@@ -131,16 +140,28 @@ void SvgFigure::legend(LegendMark mark, const Pen& pen, std::string text, std::s
   legend_.push_back({mark, pen, std::move(text), std::move(fill)});
 }
 
-void SvgFigure::render_panel(std::string& out, const Panel& panel, const Frame& frame) {
+void SvgFigure::render_panel(std::string& out, const Panel& panel, const Frame& frame,
+                             std::size_t number) {
   Obstacles obstacles;
-  out += "<g class=\"panel\">\n";
+  if (panel.shown) {
+    const Vec2 top_left = frame({panel.shown->lower.x, panel.shown->upper.y});
+    out += fmt::format(
+        R"(<clipPath id="panel{}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>)", number,
+        svg_number(top_left.x), svg_number(top_left.y), svg_number(frame.width()),
+        svg_number(frame.height()));
+    out += '\n';
+    out += fmt::format(R"svg(<g class="panel" clip-path="url(#panel{})">)svg", number);
+    out += '\n';
+  } else {
+    out += "<g class=\"panel\">\n";
+  }
   for (const Shape& shape : panel.shapes) {
     if (const auto* c = std::get_if<Circle>(&shape)) {
       svg_circle(out, frame(c->center), c->radius * frame.scale, c->pen, c->fill);
       obstacles.add_circle(frame(c->center), c->radius * frame.scale);
     } else if (const auto* l = std::get_if<Line>(&shape)) {
       if (l->arrow_head) {
-        svg_arrow(out, frame(l->from), frame(l->to), l->pen);
+        svg_arrow(out, frame(l->from), frame(l->to), l->pen, l->outline);
       } else {
         svg_line(out, frame(l->from), frame(l->to), l->pen);
       }
@@ -233,6 +254,12 @@ std::vector<SvgFigure::Frame> SvgFigure::fit_panels() const {
   double largest_half = 0.0;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     Frame::Bounds& world = frames[i].world;
+    if (const std::optional<Shown>& shown = panels_[i].shown) {
+      world.add(shown->lower);
+      world.add(shown->upper);
+      largest_half = std::max({largest_half, world.half_width(), world.half_height()});
+      continue;
+    }
     for (const Shape& shape : panels_[i].shapes) {
       if (const auto* c = std::get_if<Circle>(&shape)) world.add(c->center, c->radius);
       if (const auto* l = std::get_if<Line>(&shape)) {
@@ -264,11 +291,16 @@ std::string SvgFigure::render() const {
   // Top to bottom: headings, panels (each under its caption), legend; y is the pen's height.
   std::string body;
   double y = kPadding;
+  // Headings wrap at spaces so that none runs past the canvas's right edge.
   for (std::size_t i = 0; i < headings_.size(); ++i) {
     const bool title = i == 0;
-    y += title ? kTitleFontSize : kLineSpacing * kFontSize;
-    svg_text(body, {kPadding, y}, TextAnchor::kStart, title ? kTitleFontSize : kFontSize, title,
-             headings_[i]);
+    const double size = title ? kTitleFontSize : kFontSize;
+    const std::vector<std::string> lines =
+        wrap_words(headings_[i], characters_in(canvas_width - 2.0 * kPadding, size, title));
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      y += title && k == 0 ? kTitleFontSize : kLineSpacing * size;
+      svg_text(body, {kPadding, y}, TextAnchor::kStart, size, title, lines[k]);
+    }
   }
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     if (!panels_[i].caption.empty()) {
@@ -277,7 +309,7 @@ std::string SvgFigure::render() const {
     }
     Frame& frame = frames[i];
     frame.origin = {(canvas_width - frame.width()) / 2.0, y + kMargin};
-    render_panel(body, panels_[i], frame);
+    render_panel(body, panels_[i], frame, i);
     y += kMargin + frame.height() + kMargin;
   }
   render_legend(body, {kPadding, y}, canvas_width - 2.0 * kPadding);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -33,6 +34,10 @@ class SvgFigure {
   // Starts a new panel under the previous ones, with a caption above it ("" for none). Shapes
   // and labels go to the panel started last; a figure without panel() calls has one panel.
   void panel(std::string caption);
+  // The panel started last shows exactly this box of the plane (lower-left and upper-right
+  // corners, a positive area), its shapes cut at the box's edge. Without it a panel shows the
+  // smallest box around its shapes.
+  void view(Vec2 lower, Vec2 upper);
 
   // A circle filled with fill ("none" for an outline only), its outline drawn with pen.
   void circle(Vec2 center, double radius, const Pen& pen, std::string fill = "none");
@@ -40,8 +45,9 @@ class SvgFigure {
   // Lines joining consecutive points (an arc drawn as chords, a trail); drawn as one element.
   // Fewer than two finite points draw nothing.
   void polyline(std::vector<Vec2> points, const Pen& pen);
-  // A line with an arrow head at `to`. A zero-length arrow draws nothing.
-  void arrow(Vec2 from, Vec2 to, const Pen& pen);
+  // A line with an arrow head at `to`, over a band of the outline colour ("" for none) so that
+  // it shows on any fill. A zero-length arrow draws nothing.
+  void arrow(Vec2 from, Vec2 to, const Pen& pen, std::string outline = "");
   // A small dot of fixed size: a point, not a ball.
   void dot(Vec2 at, std::string colour);
   // text at the first of spots that covers no line, circle or earlier label; where each covers
@@ -70,6 +76,7 @@ class SvgFigure {
     Vec2 to;
     Pen pen;
     bool arrow_head;
+    std::string outline;  // an arrow's
   };
   struct Dot {
     Vec2 at;
@@ -85,10 +92,15 @@ class SvgFigure {
     std::string text;
     std::string colour;
   };
+  struct Shown {
+    Vec2 lower;
+    Vec2 upper;
+  };
   struct Panel {
     std::string caption;
     std::vector<Shape> shapes;
     std::vector<Label> labels;
+    std::optional<Shown> shown;  // from view()
   };
   struct LegendEntry {
     LegendMark mark;
@@ -104,7 +116,9 @@ class SvgFigure {
   // Each panel's world box, all at the one scale that fits the largest into kPictureSide.
   [[nodiscard]] std::vector<Frame> fit_panels() const;
   static PlacedText place_label(const Label& label, const Frame& frame, const Obstacles& obstacles);
-  static void render_panel(std::string& out, const Panel& panel, const Frame& frame);
+  // number names the panel's clip path, unique in the document.
+  static void render_panel(std::string& out, const Panel& panel, const Frame& frame,
+                           std::size_t number);
   // The legend with its top-left corner at origin, its columns spread over width.
   void render_legend(std::string& out, Vec2 origin, double width) const;
   [[nodiscard]] std::size_t legend_columns() const;

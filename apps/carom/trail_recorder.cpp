@@ -9,8 +9,6 @@ TrailRecorder::TrailRecorder(const SceneWorld& scene_world, double seconds)
     : seconds_(seconds), points_(scene_world.scene.balls.size()) {
   const SceneSettings& settings = scene_world.scene.world;
   if (settings.boundary == Boundary::periodic) period_ = settings.upper - settings.lower;
-  radii_.reserve(scene_world.scene.balls.size());
-  for (const SceneBall& ball : scene_world.scene.balls) radii_.push_back(ball.radius);
 }
 
 void TrailRecorder::add(std::size_t ball, double time, Vec2 at) {
@@ -22,18 +20,36 @@ void TrailRecorder::add(std::size_t ball, double time, Vec2 at) {
   while (points.size() > 2 && points[1].time <= time - seconds_) points.pop_front();
 }
 
-void TrailRecorder::record(const SceneWorld& scene_world, std::span<const ContactEvent> contacts) {
-  // The contact point lies on each ball's surface along the normal (from a towards b), so each
-  // centre is one radius back from it.
+namespace {
+
+// Calls visit(scene index, centre) for each ball of the contact: the contact point lies on each
+// ball's surface along the normal (from a towards b), so each centre is one radius back from it.
+template <typename Visit>
+void visit_centres(const SceneWorld& scene_world, const ContactEvent& contact, Visit visit) {
+  if (const std::optional<std::size_t> a = scene_world.index_of(contact.a)) {
+    visit(*a, contact.point - contact.normal * scene_world.scene.balls[*a].radius);
+  }
+  if (contact.kind == ContactKind::ball_ball) {
+    if (const std::optional<std::size_t> b = scene_world.index_of(contact.b)) {
+      visit(*b, contact.point + contact.normal * scene_world.scene.balls[*b].radius);
+    }
+  }
+}
+
+}  // namespace
+
+ViewBox contact_centres(const SceneWorld& scene_world, std::span<const ContactEvent> contacts) {
+  ViewBox box;
   for (const ContactEvent& contact : contacts) {
-    if (const std::optional<std::size_t> a = scene_world.index_of(contact.a)) {
-      add(*a, contact.time, contact.point - contact.normal * radii_[*a]);
-    }
-    if (contact.kind == ContactKind::ball_ball) {
-      if (const std::optional<std::size_t> b = scene_world.index_of(contact.b)) {
-        add(*b, contact.time, contact.point + contact.normal * radii_[*b]);
-      }
-    }
+    visit_centres(scene_world, contact, [&](std::size_t, Vec2 centre) { box.add(centre); });
+  }
+  return box;
+}
+
+void TrailRecorder::record(const SceneWorld& scene_world, std::span<const ContactEvent> contacts) {
+  for (const ContactEvent& contact : contacts) {
+    visit_centres(scene_world, contact,
+                  [&](std::size_t ball, Vec2 centre) { add(ball, contact.time, centre); });
   }
   const double now = scene_world.world.time();
   for (std::size_t i = 0; i < scene_world.balls.size(); ++i) {
@@ -83,6 +99,16 @@ std::vector<std::vector<Vec2>> TrailRecorder::paths(std::size_t ball, double now
     return std::all_of(r.begin(), r.end(), [&](Vec2 p) { return p == r.front(); });
   });
   return runs;
+}
+
+ViewBox TrailRecorder::extent(double now) const {
+  ViewBox box;
+  for (std::size_t ball = 0; ball < points_.size(); ++ball) {
+    for (const std::vector<Vec2>& run : paths(ball, now)) {
+      for (const Vec2 p : run) box.add(p);
+    }
+  }
+  return box;
 }
 
 }  // namespace carom::cli

@@ -13,8 +13,14 @@
 
 #include "carom/scene.hpp"
 #include "carom/vec2.hpp"
+#include "view_box.hpp"
 
 namespace carom::cli {
+
+// Where each ball's centre was at each of these contacts (world times, as step_scene gives them):
+// the points a trail bends at, which may lie outside the box of the frames' positions.
+[[nodiscard]] ViewBox contact_centres(const SceneWorld& scene_world,
+                                      std::span<const ContactEvent> contacts);
 
 class TrailRecorder {
  public:
@@ -29,6 +35,8 @@ class TrailRecorder {
   // or several where a periodic world wrapped the ball around (each run then leaves the cell by
   // the short way, for the picture's clip to cut). A ball that has not moved gives no run.
   [[nodiscard]] std::vector<std::vector<Vec2>> paths(std::size_t ball, double now) const;
+  // The box around every ball's paths up to world time now: what a picture must show of them.
+  [[nodiscard]] ViewBox extent(double now) const;
   [[nodiscard]] std::size_t ball_count() const { return points_.size(); }
 
  private:
@@ -41,7 +49,6 @@ class TrailRecorder {
 
   double seconds_;
   std::optional<Vec2> period_;  // the periodic cell's sides
-  std::vector<double> radii_;
   std::vector<std::deque<Point>> points_;
 };
 

@@ -1,6 +1,9 @@
 // Where label text goes and what it covers.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "label_placement.hpp"
 
 namespace carom::cli {
@@ -60,6 +63,23 @@ TEST(PlaceText, SitsOnTheSideItIsSentTo) {
 TEST(CountCharacters, CountsLettersNotBytes) {
   EXPECT_EQ(count_characters("va′"), 3u);
   EXPECT_EQ(count_characters("va − vb"), 7u);
+}
+
+TEST(WrapWords, BreaksAtSpacesWithinTheWidth) {
+  using Lines = std::vector<std::string>;
+  EXPECT_EQ(wrap_words("one two three four", 9), (Lines{"one two", "three", "four"}));
+  EXPECT_EQ(wrap_words("one two three four", 100), (Lines{"one two three four"}));
+  // A word longer than the width keeps a line of its own; extra spaces are dropped.
+  EXPECT_EQ(wrap_words("a  verylongword b", 4), (Lines{"a", "verylongword", "b"}));
+  EXPECT_EQ(wrap_words("", 10), Lines{});
+  // Characters, not bytes: "p′ − q" is six characters.
+  EXPECT_EQ(wrap_words("p′ − q r", 6), (Lines{"p′ − q", "r"}));
+}
+
+TEST(WrapWords, CharactersInAWidth) {
+  EXPECT_EQ(characters_in(60.0, 10.0, false), 10U);  // 0.6 font sizes a character
+  EXPECT_EQ(characters_in(65.0, 10.0, true), 10U);   // 0.65 in bold
+  EXPECT_EQ(characters_in(1.0, 10.0, false), 1U);    // always at least one
 }
 
 }  // namespace

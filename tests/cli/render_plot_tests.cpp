@@ -2,6 +2,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
+#include "label_placement.hpp"
 #include "render_plot.hpp"
 #include "render_scenes.hpp"
 #include "run_tool.hpp"
@@ -62,6 +66,52 @@ TEST(RenderPlot, MomentumOfAnOpenWorldIsKept) {
   const std::string svg = read_file(dir / "p.svg");
   EXPECT_EQ(count_of(svg, "<polyline"), 3);  // x, y and the length
   EXPECT_THAT(svg, HasSubstr("largest change |p(t) − p(0)| = "));
+}
+
+// Each <text> element's x, font size and text, in the order written.
+struct Text {
+  double x;
+  double size;
+  std::string content;
+};
+std::vector<Text> texts(const std::string& svg) {
+  std::vector<Text> out;
+  const auto number = [&](std::size_t at, const std::string& name) {
+    const std::size_t value = svg.find(name, at) + name.size();
+    return std::stod(svg.substr(value, svg.find('"', value) - value));
+  };
+  for (std::size_t at = svg.find("<text"); at != std::string::npos;
+       at = svg.find("<text", at + 1)) {
+    const std::size_t begin = svg.find('>', at) + 1;
+    out.push_back({number(at, " x=\""), number(at, "font-size=\""),
+                   svg.substr(begin, svg.find("</text>", begin) - begin)});
+  }
+  return out;
+}
+
+// The momentum plot's subtitle is a long sentence: it wraps, every line inside the picture's
+// 760 pixels at an average character width of 0.6 font sizes, none of its words lost.
+TEST(RenderPlot, MomentumSubtitleWrapsInsideThePicture) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
+  const ToolRun run = run_render(
+      {"render", scene, "--plot", "momentum", "--until", "2", "--out", (dir / "p.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "p.svg");
+  EXPECT_THAT(svg, HasSubstr("width=\"760.00\""));
+  std::string subtitle;
+  for (const Text& t : texts(svg)) {
+    EXPECT_LE(t.x + 0.6 * t.size * static_cast<double>(count_characters(t.content)), 760.0)
+        << t.content;
+    if (t.content.rfind("largest change", 0) == 0 || !subtitle.empty()) {
+      if (subtitle.find("keeps it)") == std::string::npos) {
+        subtitle += (subtitle.empty() ? "" : " ") + t.content;
+      }
+    }
+  }
+  EXPECT_THAT(subtitle, ::testing::MatchesRegex(
+                            "largest change \\|p\\(t\\) − p\\(0\\)\\| = .* \\(walls and pockets "
+                            "take momentum; a periodic or open world keeps it\\)"));
 }
 
 TEST(RoundTicks, OneTwoOrFiveTimesAPowerOfTen) {

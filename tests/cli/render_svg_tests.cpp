@@ -2,6 +2,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "carom/vec2.hpp"
 #include "render_scenes.hpp"
 #include "run_tool.hpp"
 
@@ -42,10 +47,119 @@ TEST(RenderSvg, ArrowsForMovingBallsOnlyAndALegendEntry) {
       {"render", scene, "--color", "name", "--arrows", "--out", (dir / "every.svg").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string svg = read_file(dir / "every.svg");
-  // An arrow is a shaft (<line>) and a head (<path>): two moving balls and the legend's mark.
-  EXPECT_EQ(count_of(svg, "<path"), 3);
-  EXPECT_EQ(count_of(svg, "<line"), 6 + 3);
+  // An arrow is a shaft (<line>) and a head (<path>), each over a white outline of its own
+  // shape: two moving balls, and the legend's mark (on white paper, without outline).
+  EXPECT_EQ(count_of(svg, "<path"), 2 * 2 + 1);
+  EXPECT_EQ(count_of(svg, "<line"), 6 + 2 * 2 + 1);
   EXPECT_THAT(svg, HasSubstr("later if nothing is hit"));
+}
+
+// The element (from `<` to `>`) at `at`.
+std::string element_at(const std::string& svg, std::size_t at) {
+  return svg.substr(at, svg.find('>', at) - at + 1);
+}
+
+TEST(RenderSvg, EachArrowLiesOnAWhiteOutlineWiderThanItself) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
+  const ToolRun run = run_render(
+      {"render", scene, "--color", "name", "--arrows", "--out", (dir / "every.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "every.svg");
+  const std::string panel = svg.substr(0, svg.find("<g class=\"legend\">"));
+  // In the picture, every arrow head (a filled path) follows its outline's head, and every
+  // outline follows the shaft's outline line: white, and drawn first so that it lies below.
+  int arrows = 0;
+  for (std::size_t at = panel.find("<path d=\""); at != std::string::npos;
+       at = panel.find("<path d=\"", at + 1)) {
+    const std::string head = element_at(panel, at);
+    if (head.find("stroke=") != std::string::npos) continue;  // an outline
+    ++arrows;
+    EXPECT_THAT(head, HasSubstr("fill=\"#c00000\""));
+    // The outline's head comes just before this arrow's shaft, with the same path.
+    const std::size_t shaft = panel.rfind("<line", at);
+    const std::size_t outline_head = panel.rfind("<path", shaft);
+    ASSERT_NE(outline_head, std::string::npos);
+    const std::string outline = element_at(panel, outline_head);
+    EXPECT_THAT(outline, HasSubstr("fill=\"#ffffff\" stroke=\"#ffffff\""));
+    const std::string d = head.substr(0, head.find("\" fill"));
+    EXPECT_EQ(outline.substr(0, outline.find("\" fill")), d);
+    // The outline's shaft is wider than the arrow's: 3 line widths of 2 pixels against 1.
+    const std::size_t outline_shaft = panel.rfind("<line", outline_head);
+    EXPECT_THAT(element_at(panel, outline_shaft),
+                HasSubstr("stroke=\"#ffffff\" stroke-width=\"6.00\""));
+    EXPECT_THAT(element_at(panel, shaft), HasSubstr("stroke=\"#c00000\" stroke-width=\"2.00\""));
+  }
+  EXPECT_EQ(arrows, 2);
+}
+
+// The numbers of the first `<rect` with a width in the panel's clip path: x, y, width, height.
+std::vector<double> clip_rect(const std::string& svg) {
+  std::vector<double> numbers;
+  const std::size_t at = svg.find("<clipPath");
+  if (at == std::string::npos) return numbers;
+  const std::string rect = element_at(svg, svg.find("<rect", at));
+  for (const char* name : {"x=\"", "y=\"", "width=\"", "height=\""}) {
+    const std::size_t value = rect.find(name) + std::string(name).size();
+    numbers.push_back(std::stod(rect.substr(value, rect.find('"', value) - value)));
+  }
+  return numbers;
+}
+
+// Every point of a polyline's points="x,y x,y ..." in the document, in order.
+std::vector<Vec2> polyline_points(const std::string& svg) {
+  std::vector<Vec2> points;
+  const std::string attribute = "<polyline points=\"";
+  for (std::size_t at = svg.find(attribute); at != std::string::npos;
+       at = svg.find(attribute, at + 1)) {
+    const std::size_t begin = at + attribute.size();
+    std::string list = svg.substr(begin, svg.find('"', begin) - begin);
+    std::size_t start = 0;
+    while (start < list.size()) {
+      const std::size_t stop = std::min(list.find(' ', start), list.size());
+      const std::string pair = list.substr(start, stop - start);
+      const std::size_t comma = pair.find(',');
+      points.push_back({std::stod(pair.substr(0, comma)), std::stod(pair.substr(comma + 1))});
+      start = stop + 1;
+    }
+  }
+  return points;
+}
+
+// Two balls fly apart in an open world: their trails reach back to where they started, outside
+// the box of where the balls are now, and the picture's view holds them whole.
+TEST(RenderSvg, AnOpenWorldsTrailsFitTheView) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
+  const ToolRun run = run_render(
+      {"render", scene, "--at", "1", "--trails", "1", "--out", (dir / "two.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "two.svg");
+  const std::vector<double> clip = clip_rect(svg);
+  ASSERT_EQ(clip.size(), 4U);
+  const std::vector<Vec2> points = polyline_points(svg);
+  ASSERT_GE(points.size(), 4U);  // two trails, each bent at the contact
+  for (const Vec2 p : points) {
+    EXPECT_GE(p.x, clip[0]);
+    EXPECT_LE(p.x, clip[0] + clip[2]);
+    EXPECT_GE(p.y, clip[1]);
+    EXPECT_LE(p.y, clip[1] + clip[3]);
+  }
+}
+
+// --view: the panel shows that box, 640 pixels on its longer side, cut at its edge.
+TEST(RenderSvg, ViewIsTheClippedPanel) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "every.json", kEveryKindScene);
+  const ToolRun run = run_render({"render", scene, "--color", "name", "--view", "0,0,5,2.5",
+                                  "--out", (dir / "half.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "half.svg");
+  const std::vector<double> clip = clip_rect(svg);
+  ASSERT_EQ(clip.size(), 4U);
+  EXPECT_DOUBLE_EQ(clip[2], 640.0);
+  EXPECT_DOUBLE_EQ(clip[3], 320.0);
+  EXPECT_THAT(svg, HasSubstr("<g class=\"panel\" clip-path=\"url(#panel0)\">"));
 }
 
 TEST(RenderSvg, SpeedModeAddsAScaleLegend) {

@@ -94,5 +94,60 @@ TEST(SvgFigure, CoordinatesAcrossTheDoubleRangeStillGiveNumbers) {
   EXPECT_EQ(svg.find("inf"), std::string::npos) << svg;
 }
 
+// The canvas's width, from <svg ... width="W" ...>.
+double canvas_width(const std::string& svg) {
+  const std::size_t value = svg.find("width=\"") + 7;
+  return std::stod(svg.substr(value, svg.find('"', value) - value));
+}
+
+TEST(SvgFigure, ALongHeadingWrapsInsideTheCanvas) {
+  SvgFigure figure;
+  figure.circle({0, 0}, 1, {});
+  figure.heading("Title");
+  std::string words;
+  for (int i = 0; i < 40; ++i) words += "word" + std::to_string(i) + " ";
+  figure.heading(words);
+  const std::string svg = figure.render();
+  const double width = canvas_width(svg);
+  std::string joined;
+  int lines = 0;
+  for (std::size_t at = svg.find("<text"); at != std::string::npos;
+       at = svg.find("<text", at + 1)) {
+    const std::size_t begin = svg.find('>', at) + 1;
+    const std::string text = svg.substr(begin, svg.find("</text>", begin) - begin);
+    if (text == "Title") continue;
+    ++lines;
+    joined += text + " ";
+    // From the left padding (1.5 font sizes), at 0.6 font sizes a character.
+    EXPECT_LE(1.5 * kFontSize + 0.6 * kFontSize * static_cast<double>(text.size()), width);
+  }
+  EXPECT_GE(lines, 3);
+  EXPECT_EQ(joined, words);  // every word, in order
+}
+
+TEST(SvgFigure, AViewShowsThatBoxAndClipsToIt) {
+  SvgFigure figure;
+  figure.view({0, 0}, {4, 2});
+  figure.circle({0, 0}, 10, {});  // far larger than the view: fitted to the view, not to it
+  const std::string svg = figure.render();
+  EXPECT_THAT(svg, HasSubstr("<clipPath id=\"panel0\"><rect x=\""));
+  EXPECT_THAT(svg, HasSubstr("width=\"640.00\" height=\"320.00\"/></clipPath>"));
+  EXPECT_THAT(svg, HasSubstr("<g class=\"panel\" clip-path=\"url(#panel0)\">"));
+  // 4 units across 640 pixels: the circle's radius of 10 is 1600 pixels.
+  EXPECT_THAT(svg, HasSubstr("r=\"1600.00\""));
+}
+
+TEST(SvgFigure, AnOutlinedArrowLiesOnAWiderBandOfTheOutlineColour) {
+  SvgFigure figure;
+  figure.arrow({0, 0}, {10, 0}, {"#c00000", 1.0, false}, "#ffffff");
+  const std::string svg = figure.render();
+  const std::size_t outline = svg.find("stroke=\"#ffffff\" stroke-width=\"6.00\"");
+  const std::size_t shaft = svg.find("stroke=\"#c00000\" stroke-width=\"2.00\"");
+  ASSERT_NE(outline, std::string::npos);
+  ASSERT_NE(shaft, std::string::npos);
+  EXPECT_LT(outline, shaft);  // drawn first, so below
+  EXPECT_THAT(svg, HasSubstr("fill=\"#ffffff\" stroke=\"#ffffff\" stroke-width=\"4.00\""));
+}
+
 }  // namespace
 }  // namespace carom::cli

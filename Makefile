@@ -81,7 +81,7 @@ run: run-deps
 	echo "  the end state, a scene to continue from:     $(RUN_DIR)/billiards-end.json"
 	echo "The tutorial's two balls, drawn:               $(RUN_PICTURE) (open it in a browser)"
 	$(CAROM) render examples/billiards.json --animate $(RUN_ANIMATION) --until 2.5 --trails 0.25
-	echo "The billiards break, animated:               $(RUN_ANIMATION) (open it in a browser)"
+	echo "The billiards break, animated:                 $(RUN_ANIMATION) (open it in a browser)"
 	echo "More scenes in examples/; try: $(CAROM) run examples/periodic-gas.json --until 1 --stats"
 	echo "Install the tool, library and examples: cmake --install build/release --prefix ~/.local"
 

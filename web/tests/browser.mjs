@@ -6,7 +6,7 @@ import {fileURLToPath} from 'node:url';
 
 import {chromium} from 'playwright-core';
 
-import {serve} from '../serve.mjs';
+import {serve, siteProblem} from '../serve.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 export const REPO = resolve(here, '..', '..');
@@ -22,6 +22,8 @@ const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--no-firs
 // Starts the server and the browser; close() stops both.
 export async function openBrowser() {
   await mkdir(OUTPUT, {recursive: true});
+  const problem = await siteProblem(SITE);
+  if (problem) throw new Error(`${problem}; or set CAROM_WEB_SITE to a built site`);
   const server = await serve(SITE, 0);
   const browser = await chromium.launch({executablePath: CHROMIUM, headless: true,
                                          args: CHROMIUM_ARGS});

@@ -1,13 +1,14 @@
 // Dragging on an SVG figure in world units, with the mouse or with a real touch.
 
-// Where world point p of the page's SVG figure is on the screen.
+// Where world point p of the page's SVG figure is on the screen: through the figure's world
+// group, which flips y so that it points up.
 export async function figurePoint(page, p) {
   return page.evaluate(({x, y}) => {
     const svg = document.getElementById('figure');
     const point = svg.createSVGPoint();
     point.x = x;
     point.y = y;
-    const on = point.matrixTransform(svg.getScreenCTM());
+    const on = point.matrixTransform(svg.querySelector('g.world').getScreenCTM());
     return {x: on.x, y: on.y};
   }, p);
 }

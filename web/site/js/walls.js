@@ -4,7 +4,7 @@
 import {attempt, carom} from './carom.js';
 import {num, vec} from './format.js';
 import {fillReadout, slider} from './sliders.js';
-import {Figure} from './svg_figure.js';
+import {Figure, fillLegend} from './svg_figure.js';
 
 const state = {
   ball: {center: {x: 0, y: 0}, radius: 0.8},
@@ -14,7 +14,7 @@ const state = {
 };
 
 const scene = new carom.WallsScene();
-const figure = new Figure(document.getElementById('figure'), {x: -4, y: -5, width: 18, height: 13});
+const figure = new Figure(document.getElementById('figure'), {x: -4, y: -4, width: 18, height: 13});
 const radius = slider('radius', (r) => { state.ball.radius = r; redraw(); });
 const restitution = slider('restitution', redraw);
 state.ball.radius = radius.value;
@@ -52,27 +52,42 @@ function arcEnd(arc, which) {
   };
 }
 
-const handles = [
-  figure.handle('ball', {get: () => state.ball.center, set: (p) => { state.ball.center = p; },
-                         radius: () => state.ball.radius, cls: 'ball-handle'}, redraw),
-  figure.handle('move-end', {get: () => plus(state.ball.center, state.move),
-                             set: (p) => { state.move = minus(p, state.ball.center); },
-                             radius: () => HANDLE_RADIUS}, redraw),
-];
+figure.handle('ball', {get: () => state.ball.center, set: (p) => { state.ball.center = p; },
+                       radius: () => state.ball.radius, cls: 'ball-handle', ball: true}, redraw);
+figure.handle('move-end', {get: () => plus(state.ball.center, state.move),
+                           set: (p) => { state.move = minus(p, state.ball.center); },
+                           radius: () => HANDLE_RADIUS}, redraw);
 state.segments.forEach((segment, i) => {
   for (const end of ['a', 'b']) {
-    handles.push(figure.handle(`segment${i}-${end}`, {
+    figure.handle(`segment${i}-${end}`, {
       get: () => segment[end], set: (p) => { segment[end] = p; }, radius: () => HANDLE_RADIUS,
-    }, redraw));
+    }, redraw);
   }
 });
 state.arcs.forEach((arc, i) => {
-  handles.push(figure.handle(`arc${i}-center`, {
+  figure.handle(`arc${i}-center`, {
     get: () => arc.center, set: (p) => { arc.center = p; }, radius: () => HANDLE_RADIUS,
-  }, redraw));
-  handles.push(figure.handle(`arc${i}-start`, arcEnd(arc, 'start'), redraw));
-  handles.push(figure.handle(`arc${i}-end`, arcEnd(arc, 'end'), redraw));
+  }, redraw);
+  figure.handle(`arc${i}-start`, arcEnd(arc, 'start'), redraw);
+  figure.handle(`arc${i}-end`, arcEnd(arc, 'end'), redraw);
 });
+
+fillLegend(document.getElementById('legend'), [
+  {title: 'The step', entries: [
+    {mark: 'disc', cls: 'ball a', text: 'the ball at the start'},
+    {mark: 'arrow', cls: 'a', text: 'v: its movement during the step'},
+    {mark: 'ring', cls: 'ball a ghost', text: 'the ball at the end of the step, if nothing is hit'},
+    {mark: 'line', cls: 'wall', text: 'a segment or an arc'},
+    {mark: 'line', cls: 'wall touched', text: 'the first one the ball touches'},
+  ]},
+  {title: 'The bounce', entries: [
+    {mark: 'ring', cls: 'ball a outline', text: 'the ball at the contact'},
+    {mark: 'dot', cls: 'contact', text: 'the contact point'},
+    {mark: 'arrow', cls: 'a along', text: 'v along the normal'},
+    {mark: 'arrow', cls: 'a across', text: 'v across it'},
+    {mark: 'arrow', cls: 'a after', text: "v′: the ball's movement after the bounce"},
+  ]},
+]);
 
 function redraw() {
   const result = attempt(() => {
@@ -80,11 +95,8 @@ function redraw() {
     state.arcs.forEach((arc, i) => scene.set_arc(i, arc));
     return scene.solve(state.ball, state.move, restitution.value);
   });
-  for (const h of handles) h.place();
-  figure.clear();
-  if (!result) return;
-  draw(result);
-  show(result);
+  figure.update(() => { if (result) draw(result); });
+  if (result) show(result);
 }
 
 const touched = (f, kind, i) => f.kind === kind && f.index === i;
@@ -99,14 +111,17 @@ function draw(f) {
   });
   figure.circle(f.end, ball.radius, 'ball a ghost');
   figure.circle(ball.center, ball.radius, 'ball a');
+  const hit = f.kind !== carom.ShapeKind.none;
+  if (hit) {
+    figure.circle(f.impact.a_at, ball.radius, 'ball a outline');
+    figure.circle(f.impact.point, 0.12, 'contact');
+  }
   figure.arrow(ball.center, move, 'a', 'v');
-  if (f.kind === carom.ShapeKind.none) return;
+  if (!hit) return;
   const impact = f.impact;
-  figure.circle(impact.a_at, ball.radius, 'ball a outline');
-  figure.circle(impact.point, 0.12, 'contact');
   figure.arrow(impact.a_at, f.split.along, 'a along');
   figure.arrow(impact.a_at, f.split.across, 'a across');
-  figure.arrow(impact.a_at, f.after.velocity, 'a after', "v'");
+  figure.arrow(impact.a_at, f.after.velocity, 'a after', 'v′');
 }
 
 function describe(f) {
@@ -144,7 +159,8 @@ function show(f) {
   fillReadout(texts);
 }
 
-// Handles keep a finger's size on screen, so they are sized again when the layout changes.
+// Handles and labels keep their size on screen, so they are placed again when the layout
+// changes.
 window.addEventListener('resize', redraw);
 redraw();
 document.body.dataset.ready = 'true';

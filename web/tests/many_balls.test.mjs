@@ -64,14 +64,14 @@ test('e = 0.5: the energy drops', {timeout: RUN_TIMEOUT_MS}, async () => {
   await page.close();
 });
 
-// The ball's place on the screen.
+// The ball's place on the screen: y up, the view's top edge at the canvas's top.
 async function ballOnScreen(page, index) {
   return page.evaluate((i) => {
     const {world, view} = window.caromPlayground;
     const p = world.position(i);
     const box = document.getElementById('box').getBoundingClientRect();
     return {x: box.left + (p.x - view.x) / view.width * box.width,
-            y: box.top + (p.y - view.y) / view.height * box.height};
+            y: box.top + (view.y + view.height - p.y) / view.height * box.height};
   }, index);
 }
 

@@ -1,7 +1,8 @@
 // "Many balls": a carom::World in a box, or any carom scene file (an example, or a file dropped on
 // the page or chosen with the picker), advanced 1/60 time unit per frame and drawn on a canvas.
 // The world, the dragging, the pockets and every number shown come from carom
-// (carom::web::DrawnWorld; scene files through carom's scene library).
+// (carom::web::DrawnWorld; scene files through carom's scene library). Every scene is drawn y up,
+// as carom's scene files and `carom render` draw them; an open world's view follows its balls.
 import {attempt, carom} from './carom.js';
 import {num, vec} from './format.js';
 import {DiscRaster, packColour, packCssColour} from './disc_raster.js';
@@ -26,6 +27,9 @@ const RIM_WIDTH = 1;  // pixels
 // Why a scene could not be loaded: the scene library's message (file:line:column: ...). Apart
 // from the error line, which the next call that succeeds clears.
 const sceneError = document.getElementById('scene-error');
+// What "Check overlaps" found, for the world on the page.
+const audit = document.getElementById('audit');
+const speedLegend = document.getElementById('speed-legend');
 const sources = [...sceneSources];
 try {
   sources.push(...await exampleSources());
@@ -52,6 +56,7 @@ const speed = slider('speed', (s) => {
   attempt(() => world.scale_speeds(s / currentSpeed));
   colourTop *= s / currentSpeed;
   currentSpeed = s;
+  showSpeedLegend();
 });
 // carom::World fixes a ball's restitution when the ball is added, so a new e starts the scene
 // again (re-adding the balls where they are could fail: after a contact two balls touch, and a
@@ -63,9 +68,11 @@ let world = null;
 let ballColours = new Uint32Array(0);
 let colourTop = 1;
 let pockets = [];
-// The part of the world on the canvas: the box (or periodic cell), or for an open world the
-// extent of its balls, walls and pockets when it was built; flipY: y up on the screen.
+// The part of the world on the canvas, y up: the box (or periodic cell), or for an open world
+// the extent of its balls, walls and pockets, refitted as the balls move (follow()).
 let view = {x: 0, y: 0, width: 1, height: 1};
+let open = false;
+let walls = emptyExtent();  // an open world's segments, arcs and pockets
 let running = params.get('paused') !== '1';
 let held = -1;
 let history = [];  // [time, collision count] per frame, for the rate
@@ -122,11 +129,13 @@ function install(source, built) {
   ballColours = Uint32Array.from(world.colors(), (text) => (text && packCssColour(text)) || 0);
   pockets = world.pockets();
   colourTop = source.fromFile ? 2 * meanSpeed(world) : 2 * speed.value;
-  // Scene files are drawn y up, as `carom run --svg` draws them (their arcs run
-  // counter-clockwise); the page's own boxes keep the screen's y down.
-  view = {...viewOf(world), flipY: !!source.fromFile};
+  open = world.def().boundary === carom.Boundary.open;
+  walls = open ? wallsOf(world) : emptyExtent();
+  view = viewOf(world);
   canvas.style.aspectRatio = `${view.width} / ${view.height}`;
   currentSpeed = speed.value;
+  audit.textContent = '';  // it spoke of the world just replaced
+  showSpeedLegend();
   held = -1;
   history = [];
   for (const key of Object.keys(stats)) stats[key].length = 0;
@@ -143,6 +152,27 @@ function meanSpeed(w) {
     if (balls[i + 3] > 0) sum += balls[i + 3], ++moving;
   }
   return moving ? sum / moving : 1;
+}
+
+// The colours of balls drawn by speed, each band's range in the world's units: shown while any
+// ball is drawn by speed (a scene that colours every ball needs none).
+function showSpeedLegend() {
+  speedLegend.hidden = !ballColours.some((colour) => colour === 0);
+  const bands = SPEED_COLOURS.map((colour, i) => {
+    const from = colourTop * i / SPEED_COLOURS.length;
+    const last = i === SPEED_COLOURS.length - 1;
+    const to = last ? Infinity : colourTop * (i + 1) / SPEED_COLOURS.length;
+    const item = document.createElement('span');
+    item.dataset.colour = colour;
+    item.dataset.from = String(from);
+    item.dataset.to = String(to);
+    const swatch = document.createElement('span');
+    swatch.className = 'swatch';
+    swatch.style.background = colour;
+    item.append(swatch, last ? `${num(from, 3)} or more` : `${num(from, 3)} to ${num(to, 3)}`);
+    return item;
+  });
+  speedLegend.replaceChildren('Speed, length units per time unit:', ...bands);
 }
 
 // ---- a scene file from the user ----------------------------------------------------------------
@@ -181,7 +211,41 @@ document.addEventListener('drop', (event) => {
 
 // ---- drawing -------------------------------------------------------------------------------
 
-const OPEN_MARGIN = 0.05;  // an open world's view reaches this fraction beyond what it holds
+const OPEN_MARGIN = 0.05;  // an open world's first view reaches this fraction beyond what it holds
+// When an open world's balls leave the view (or gather in less than FOLLOW_SMALLEST of it both
+// ways), the view refits around them with this much room, a share of the longer side, so that
+// it does not have to move again at once.
+const FOLLOW_MARGIN = 0.25;
+const FOLLOW_SMALLEST = 0.3;
+
+// An axis-aligned box in world units, empty until something is added (cover).
+function emptyExtent() {
+  return {x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity};
+}
+
+function cover(extent, x, y, r) {
+  extent.x0 = Math.min(extent.x0, x - r);
+  extent.y0 = Math.min(extent.y0, y - r);
+  extent.x1 = Math.max(extent.x1, x + r);
+  extent.y1 = Math.max(extent.y1, y + r);
+}
+
+function wallsOf(w) {
+  const extent = emptyExtent();
+  for (const s of w.segments()) cover(extent, s.a.x, s.a.y, 0), cover(extent, s.b.x, s.b.y, 0);
+  for (const a of w.arcs()) cover(extent, a.center.x, a.center.y, a.radius);
+  for (const p of w.pockets()) cover(extent, p.x, p.y, p.radius);
+  return extent;
+}
+
+// The live balls (snapshot: x, y, radius, speed each; radius 0 once potted) and the walls.
+function contentOf(balls) {
+  const extent = {...walls};
+  for (let i = 0; i < balls.length; i += 4) {
+    if (balls[i + 2] > 0) cover(extent, balls[i], balls[i + 1], balls[i + 2]);
+  }
+  return extent;
+}
 
 function viewOf(w) {
   const def = w.def();
@@ -189,23 +253,31 @@ function viewOf(w) {
     return {x: def.lower.x, y: def.lower.y, width: def.upper.x - def.lower.x,
             height: def.upper.y - def.lower.y};
   }
-  const extent = {x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity};
-  const cover = (x, y, r) => {
-    extent.x0 = Math.min(extent.x0, x - r);
-    extent.y0 = Math.min(extent.y0, y - r);
-    extent.x1 = Math.max(extent.x1, x + r);
-    extent.y1 = Math.max(extent.y1, y + r);
-  };
-  const balls = w.snapshot();
-  for (let i = 0; i < balls.length; i += 4) cover(balls[i], balls[i + 1], balls[i + 2]);
-  for (const s of w.segments()) cover(s.a.x, s.a.y, 0), cover(s.b.x, s.b.y, 0);
-  for (const a of w.arcs()) cover(a.center.x, a.center.y, a.radius);
-  for (const p of w.pockets()) cover(p.x, p.y, p.radius);
+  const extent = contentOf(w.snapshot());
   if (extent.x0 > extent.x1) return {x: -1, y: -1, width: 2, height: 2};
   const width = extent.x1 - extent.x0 || 1;
   const height = extent.y1 - extent.y0 || 1;
   return {x: extent.x0 - OPEN_MARGIN * width, y: extent.y0 - OPEN_MARGIN * height,
           width: width * (1 + 2 * OPEN_MARGIN), height: height * (1 + 2 * OPEN_MARGIN)};
+}
+
+// An open world's view follows its balls: refitted, in the canvas's proportions, when one
+// leaves it or all gather in a small part of it. Returns whether it moved.
+function follow(balls) {
+  const e = contentOf(balls);
+  if (e.x0 > e.x1) return false;
+  const inside = e.x0 >= view.x && e.y0 >= view.y && e.x1 <= view.x + view.width &&
+                 e.y1 <= view.y + view.height;
+  const small = e.x1 - e.x0 < FOLLOW_SMALLEST * view.width &&
+                e.y1 - e.y0 < FOLLOW_SMALLEST * view.height;
+  if (inside && !small) return false;
+  const margin = FOLLOW_MARGIN * Math.max(e.x1 - e.x0, e.y1 - e.y0, Number.MIN_VALUE);
+  let width = e.x1 - e.x0 + 2 * margin;
+  let height = e.y1 - e.y0 + 2 * margin;
+  const aspect = view.width / view.height;
+  if (width / height > aspect) height = width / aspect; else width = height * aspect;
+  view = {x: (e.x0 + e.x1 - width) / 2, y: (e.y0 + e.y1 - height) / 2, width, height};
+  return true;
 }
 
 function resize() {
@@ -219,14 +291,15 @@ function resize() {
 }
 
 function draw() {
+  // x, y, radius, speed per ball (radius 0: potted), in the scene's colour or by speed.
+  const balls = world.snapshot();
+  if (open) follow(balls);
   resize();
   const scale = canvas.width / view.width;
   const px = (x) => (x - view.x) * scale;
-  const py = (y) => (view.flipY ? view.y + view.height - y : y - view.y) * scale;
+  const py = (y) => (view.y + view.height - y) * scale;  // y up
   raster.begin(BACKGROUND);
   for (const p of pockets) raster.disc(px(p.x), py(p.y), p.radius * scale, POCKET_COLOUR);
-  // x, y, radius, speed per ball (radius 0: potted), in the scene's colour or by speed.
-  const balls = world.snapshot();
   for (let i = 0; i < balls.length; i += 4) {
     if (balls[i + 2] === 0) continue;
     const band = Math.min(BAND_COLOURS.length - 1,
@@ -253,10 +326,8 @@ function draw() {
   }
   for (const a of world.arcs()) {
     context.beginPath();
-    // y flipped: the world's angle θ is the screen's −θ, so the arc runs from −end to −start.
-    const [start, end] = view.flipY ? [-a.end_angle, -a.start_angle]
-                                    : [a.start_angle, a.end_angle];
-    context.arc(px(a.center.x), py(a.center.y), a.radius * scale, start, end);
+    // y up: the world's angle θ is the screen's −θ, so the arc runs from −end to −start.
+    context.arc(px(a.center.x), py(a.center.y), a.radius * scale, -a.end_angle, -a.start_angle);
     context.stroke();
   }
   if (held >= 0) {
@@ -338,7 +409,7 @@ document.getElementById('reset').addEventListener('click', rebuild);
 // carom::World::audit: a brute-force look at every pair (slow for 10⁴ balls, hence a button).
 document.getElementById('check').addEventListener('click', () => {
   const problem = attempt(() => world.audit());
-  document.getElementById('audit').textContent =
+  audit.textContent =
       problem === undefined ? '' : problem || 'No two balls overlap; every ball is inside the box.';
 });
 sceneSelect.addEventListener('change', rebuild);
@@ -347,9 +418,8 @@ sceneSelect.addEventListener('change', rebuild);
 
 function worldPoint(event) {
   const box = canvas.getBoundingClientRect();
-  const down = (event.clientY - box.top) / box.height * view.height;
   return {x: view.x + (event.clientX - box.left) / box.width * view.width,
-          y: view.flipY ? view.y + view.height - down : view.y + down};
+          y: view.y + view.height - (event.clientY - box.top) / box.height * view.height};
 }
 
 canvas.addEventListener('pointerdown', (event) => {

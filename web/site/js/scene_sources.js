@@ -15,11 +15,12 @@ const PACKING_FRACTION = 0.25;
 // time here is of order radius / speed ~ 10⁻², so 10⁻⁴ leaves the dissipation almost untouched.
 const COLLAPSE_TIME = 1e-4;
 
-// A funnel of two segments, three round bumpers (full-circle arcs) and a cup (half an arc).
-const FUNNEL = [{a: {x: 15, y: 25}, b: {x: 68, y: 50}}, {a: {x: 145, y: 25}, b: {x: 92, y: 50}}];
-const BUMPERS = [{x: 35, y: 75}, {x: 80, y: 80}, {x: 125, y: 75}].map(
+// A funnel of two segments narrowing downwards, three round bumpers (full-circle arcs) below
+// it, and a cup (the lower half of an arc) above it; y up, as every scene is drawn.
+const FUNNEL = [{a: {x: 15, y: 75}, b: {x: 68, y: 50}}, {a: {x: 145, y: 75}, b: {x: 92, y: 50}}];
+const BUMPERS = [{x: 35, y: 25}, {x: 80, y: 20}, {x: 125, y: 25}].map(
     (center) => ({center, radius: 7, start_angle: 0, end_angle: 2 * Math.PI}));
-const CUP = {center: {x: 80, y: 22}, radius: 12, start_angle: 0, end_angle: Math.PI};
+const CUP = {center: {x: 80, y: 78}, radius: 12, start_angle: Math.PI, end_angle: 2 * Math.PI};
 
 function boxWorld(carom, restitution) {
   return new carom.DrawnWorld({boundary: carom.Boundary.box, lower: {x: 0, y: 0},

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -209,12 +210,18 @@ struct PottedBall {
 // Like World::step / run_until / run_collisions, with pockets: a ball that touches a pocket is
 // removed at that instant and the run goes on. Each call appends every contact (pocket contacts
 // included) to contacts and every potting to potted when they are given. Contact times in
-// `contacts` are world times (add start_time for scene time).
+// `contacts` are world times (add start_time for scene time), and so are run_scene_until's `time`
+// and run_scene_collisions' `time_limit`. Afterwards world.stop_reason() says why the call
+// returned (none, no_more_contacts, time_limit or interrupted; pockets' contacts never end it).
 double step_scene(SceneWorld& scene_world, double dt, std::vector<ContactEvent>* contacts = nullptr,
                   std::vector<PottedBall>* potted = nullptr);
+double run_scene_until(SceneWorld& scene_world, double time,
+                       std::vector<ContactEvent>* contacts = nullptr,
+                       std::vector<PottedBall>* potted = nullptr);
 std::uint64_t run_scene_collisions(SceneWorld& scene_world, std::uint64_t count,
                                    std::vector<ContactEvent>* contacts = nullptr,
-                                   std::vector<PottedBall>* potted = nullptr);
+                                   std::vector<PottedBall>* potted = nullptr,
+                                   double time_limit = std::numeric_limits<double>::infinity());
 
 // The world's state now as a scene to continue from: the same settings, walls and pockets, the
 // balls still in the world (positions and velocities now, names, colours, restitution kept), no

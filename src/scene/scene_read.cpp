@@ -2,6 +2,7 @@
 // (overlaps, balls outside a box, generators that cannot place their balls) in scene_check.cpp.
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -323,6 +324,11 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
+  // A folder opens as a stream on Linux and then reads as nothing: say what it is instead.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw SceneError({path.string(), 0, 0, "", "", "is a folder, not a scene file", ""});
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw SceneError(

@@ -133,28 +133,33 @@ void stop_at_pocket_contacts(World& world, std::vector<BallId> pockets) {
 double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,
                   std::vector<PottedBall>* potted) {
   const double start = sw.world.time();
-  const double end = start + dt;
   if (sw.pockets.empty()) {
     const double advanced = sw.world.step(dt);
     append(sw.world, contacts);
     return advanced;
   }
+  return run_scene_until(sw, start + dt, contacts, potted);
+}
+
+double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
+                       std::vector<PottedBall>* potted) {
+  const double start = sw.world.time();
   for (;;) {
-    static_cast<void>(sw.world.run_until(end));
+    static_cast<void>(sw.world.run_until(time));
     append(sw.world, contacts);
     if (!sw.world.stopped_early()) break;
     pot(sw, potted);
-    if (sw.world.time() >= end) break;
+    if (sw.world.time() >= time) break;
   }
   return sw.world.time() - start;
 }
 
 std::uint64_t run_scene_collisions(SceneWorld& sw, std::uint64_t count,
                                    std::vector<ContactEvent>* contacts,
-                                   std::vector<PottedBall>* potted) {
+                                   std::vector<PottedBall>* potted, double time_limit) {
   std::uint64_t done = 0;
   while (done < count) {
-    done += sw.world.run_collisions(count - done);
+    done += sw.world.run_collisions(count - done, time_limit);
     append(sw.world, contacts);
     if (!sw.world.stopped_early()) break;
     pot(sw, potted);

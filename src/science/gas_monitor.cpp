@@ -118,7 +118,9 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
   const double start_time = world.time();
   std::size_t since_structure = 0;
   std::uint64_t collisions = 0;
-  for (std::size_t block = 0; block < blocks; ++block) {
+  bool interrupted = false;
+  std::size_t blocks_done = 0;
+  for (std::size_t block = 0; block < blocks && !interrupted; ++block) {
     std::uint64_t block_collisions = 0;
     const double block_start = world.time();
     origin.assign(motion.displacements().begin(), motion.displacements().end());
@@ -133,12 +135,19 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
       if (world.stopped_early()) {
         throw std::runtime_error("carom::science::measure_gas: the world's stop condition fired");
       }
+      interrupted = world.stop_reason() == StopReason::interrupted;
       block_collisions += world.contacts().size();
       for (const ContactEvent& contact : world.contacts()) {
         // r_ij = −σ_ij·n and Δp_i = −J·n, so r_ij·Δp_i = σ_ij·J (docs/science.md).
         virial +=
             contact.impulse * (radius_of_slot[contact.a.index] + radius_of_slot[contact.b.index]);
         motion.on_contact(contact);
+      }
+      if (interrupted) {
+        // The contacts so far count (histograms, drifts); the unfinished block does not.
+        motion.advance(world.time());
+        collisions += block_collisions;
+        break;
       }
       if (run + 1 == runs_per_block) {
         motion.synchronise(world);
@@ -156,6 +165,8 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
         structure.sample(positions);
       }
     }
+    if (interrupted) break;
+    ++blocks_done;
     const double block_time = world.time() - block_start;
     const SpeedIntegrals speeds = motion.take_integrals();
     const double z = 1.0 + virial / (2.0 * block_time * energy);
@@ -184,6 +195,8 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
 
   results.collisions = collisions;
   results.time = world.time() - start_time;
+  results.interrupted = interrupted;
+  results.blocks_done = blocks_done;
   results.structure_samples = structure.samples();
   results.z = block_estimate(series.z);
   results.collision_rate = block_estimate(series.rate);
@@ -208,9 +221,9 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
     results.speed.x.push_back((static_cast<double>(bin) + 0.5) * speed_bin);
     results.speed.y.push_back(histogram[bin] / (disk_time * speed_bin));
   }
-  for (std::size_t run = 0; run < runs_per_block; ++run) {
-    results.msd.x.push_back(msd_lag[run] / static_cast<double>(blocks));
-    results.msd.y.push_back(msd_sum[run] / static_cast<double>(blocks));
+  for (std::size_t run = 0; run < runs_per_block && blocks_done > 0; ++run) {
+    results.msd.x.push_back(msd_lag[run] / static_cast<double>(blocks_done));
+    results.msd.y.push_back(msd_sum[run] / static_cast<double>(blocks_done));
   }
   if (structure.samples() > 0) {
     results.final_positions = positions;
@@ -230,6 +243,10 @@ double equilibrate(World& world, std::uint64_t collisions) {
   const double start = world.time();
   const std::uint64_t done = world.run_collisions(run);
   const double elapsed = world.time() - start;
+  if (world.stop_reason() == StopReason::interrupted) {
+    return elapsed > 0.0 ? 2.0 * static_cast<double>(done) / (static_cast<double>(n) * elapsed)
+                         : 0.0;
+  }
   if (done != run || !(elapsed > 0.0)) {
     throw std::runtime_error("carom::science::equilibrate: the world resolved " +
                              std::to_string(done) + " of " + std::to_string(run) +

@@ -72,7 +72,12 @@ struct GasResults {
   double mass = 0.0;              // of the reference disks
   std::uint64_t collisions = 0;   // resolved in the production run
   double time = 0.0;              // duration of the production run
-  double kT = 0.0;                // K/N
+  // Whether the run was stopped from outside (World::request_stop or the world's progress
+  // callback): the estimates and the MSD then cover the blocks completed, `blocks_done` of them;
+  // the histograms, drifts and collisions cover the whole run up to the stop.
+  bool interrupted = false;
+  std::size_t blocks_done = 0;
+  double kT = 0.0;  // K/N
   std::size_t structure_samples = 0;
 
   BlockEstimate z;
@@ -105,14 +110,16 @@ struct GasResults {
 // Runs world for `duration` more time units and measures. The world must be periodic with the
 // given cell, hold no walls, at least two balls, all movable; duration > 0. Throws
 // carom::InvalidArgument otherwise. Blocks and runs are equal in time, so every average is a
-// time average (the number of collisions per block varies a little).
+// time average (the number of collisions per block varies a little). A run stopped from outside
+// ends the measurement there (GasResults::interrupted).
 [[nodiscard]] GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
                                      const GasMonitorSettings& settings = {});
 
 // The time a production run of the given collisions per disk takes, near enough: a world first
 // runs `collisions` (to equilibrate), then the collision rate per disk ω = 2C/(N·t) measured over
 // them turns collisions per disk into time, 2·per_disk/ω. Fewer than N equilibration collisions
-// would give a poor rate, so at least N are run. Returns ω.
+// would give a poor rate, so at least N are run. Returns ω; a run stopped from outside returns the
+// rate seen so far (0 if no time passed), with world.stop_reason() == interrupted.
 [[nodiscard]] double equilibrate(World& world, std::uint64_t collisions);
 
 }  // namespace carom::science

@@ -21,6 +21,7 @@
 #include "machine_info.hpp"
 #include "option_value.hpp"
 #include "readable_number.hpp"
+#include "stop_signals.hpp"
 #include "usage_error.hpp"
 #include "wall_clock.hpp"
 
@@ -161,12 +162,17 @@ BenchOutcome measure(const BenchSettings& settings) {
   // Nothing reads the contacts here, and recording them would grow the process by 80 bytes per
   // collision, so bytes_per_ball would measure the contact list rather than the world.
   world.set_contact_recording(false);
+  stop_world_on_signals(world);
 
   // The first run also builds the final grid and predicts every ball once; equilibration keeps
   // that one-off cost out of the timed run.
   start = std::chrono::steady_clock::now();
   outcome.equilibration_collisions = world.run_collisions(settings.equilibration_collisions);
   outcome.equilibration_seconds = seconds_since(start);
+  if (world.stop_reason() == StopReason::interrupted) {
+    outcome.interrupted = true;
+    return outcome;
+  }
   const std::uint64_t peak_after = peak_resident_bytes();
   outcome.peak_rss_growth_bytes = peak_after > peak_before ? peak_after - peak_before : 0;
 
@@ -179,6 +185,7 @@ BenchOutcome measure(const BenchSettings& settings) {
     outcome.collisions += resolved;
     outcome.wall_seconds += seconds;
     outcome.repetitions.push_back(seconds);
+    outcome.interrupted = world.stop_reason() == StopReason::interrupted;
     if (resolved != settings.collisions) break;  // (reported below)
   }
   const double energy_after = world.kinetic_energy();
@@ -210,10 +217,20 @@ int run_goals(const BenchOptions& options) {
       std::cerr << "carom bench --goals: gas " << k + 1 << " of " << plan.size() << ", " << one.n
                 << " disks at eta " << one.eta << '\n';
     }
-    const std::string out = output_of_program(
-        kThisProgram,
-        {"bench", "--n", one.n, "--eta", one.eta, "--collisions-per-ball", one.collisions_per_ball,
-         "--repeat", one.repeat, "--seed", one.seed, "--equilibrate", one.equilibrate, "--json"});
+    std::string out;
+    try {
+      out = output_of_program(kThisProgram,
+                              {"bench", "--n", one.n, "--eta", one.eta, "--collisions-per-ball",
+                               one.collisions_per_ball, "--repeat", one.repeat, "--seed", one.seed,
+                               "--equilibrate", one.equilibrate, "--json"});
+    } catch (const std::runtime_error&) {
+      if (!StopOnSignals::requested()) throw;
+    }
+    if (StopOnSignals::requested()) {
+      std::cerr << "carom bench --goals: " << StopOnSignals::what() << " in gas " << k + 1 << " of "
+                << plan.size() << ": no verdicts\n";
+      return StopOnSignals::exit_code();
+    }
     benches.push_back(nlohmann::ordered_json::parse(out));
     gases.push_back(gas_figures(benches.back()));
   }
@@ -229,10 +246,16 @@ int run_goals(const BenchOptions& options) {
 }
 
 int run(const BenchOptions& options) {
+  // A signal stops the gas; the figures of what ran are reported.
+  const StopOnSignals stop_on_signals;
   if (options.goals) return run_goals(options);
   const BenchSettings settings = parse(options);
   const BenchOutcome outcome = measure(settings);
-  if (outcome.collisions != settings.collisions * settings.repeats) {
+  if (outcome.interrupted && outcome.collisions == 0) {
+    std::cerr << "carom bench: " << StopOnSignals::what() << " before a timed collision\n";
+    return StopOnSignals::exit_code();
+  }
+  if (!outcome.interrupted && outcome.collisions != settings.collisions * settings.repeats) {
     std::cerr << "carom bench: error: the world resolved " << outcome.collisions << " of the "
               << settings.collisions * settings.repeats << " collisions asked for\n";
     return kExitFailure;
@@ -241,6 +264,11 @@ int run(const BenchOptions& options) {
     std::cout << bench_json(outcome).dump() << '\n';
   } else {
     std::cout << bench_text(outcome);
+  }
+  if (outcome.interrupted) {
+    std::cerr << "carom bench: " << StopOnSignals::what() << " after " << outcome.collisions
+              << " timed collisions; the figures cover those\n";
+    return StopOnSignals::exit_code();
   }
   return kExitSuccess;
 }

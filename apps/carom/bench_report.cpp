@@ -112,6 +112,7 @@ nlohmann::ordered_json bench_json(const BenchOutcome& o) {
   out["best_nanoseconds_per_collision"] = o.best_nanoseconds_per_collision();
   out["bytes_per_ball"] = o.bytes_per_ball();
   out["peak_rss_growth_bytes"] = o.peak_rss_growth_bytes;
+  out["stopped"] = o.interrupted ? nlohmann::ordered_json("interrupted") : nlohmann::ordered_json();
   out["energy_drift"] = o.energy_drift;
   out["momentum_drift"] = o.momentum_drift;
   out["build_type"] = o.build_type;

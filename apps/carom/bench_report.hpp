@@ -30,6 +30,7 @@ struct BenchOutcome {
   std::uint64_t peak_rss_growth_bytes = 0;
   double energy_drift = 0.0;    // (E_after − E_before) / E_before over the timed run
   double momentum_drift = 0.0;  // |P_after − P_before| / √(2·M·E_before), M the total mass
+  bool interrupted = false;     // stopped by a signal: the figures cover the runs up to there
   std::string build_type;       // of this binary: the figures mean little below Release
   std::string compiler;
   MachineInfo machine;

@@ -10,6 +10,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "stop_signals.hpp"
+
 namespace carom::cli {
 
 namespace {
@@ -56,6 +58,8 @@ std::string output_of_program(const std::string& program, const std::vector<std:
     fail("cannot start " + program);
   }
   if (child == 0) become(program, argv.data(), fds[0], fds[1]);
+  // A signal that stops this process stops the child too (StopOnSignals).
+  const ForwardSignalsTo forward(child);
   ::close(fds[1]);
   std::string out;
   char buffer[4096];

@@ -6,7 +6,9 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench_command.hpp"
@@ -39,16 +41,42 @@ int fail(const CLI::App& app, int status, const std::string& message) {
   return status;
 }
 
-// CLI11 reports a misspelt verb as a missing one; the user wants to hear about what they typed.
-std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc,
-                                char** argv) {
-  const bool verb_unknown = app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-';
-  if (!verb_unknown) return error.what();
+std::string verb_list(const CLI::App& app) {
   std::string verbs;
   for (const CLI::App* verb : app.get_subcommands([](const CLI::App*) { return true; })) {
     verbs += (verbs.empty() ? "" : ", ") + verb->get_name();
   }
-  return "\"" + std::string(argv[1]) + "\" is not a verb; the verbs are: " + verbs;
+  return verbs;
+}
+
+// An option given before the verb that carom itself does not have ("-V", "--verbose"), or
+// nothing; CLI11 would report it as a missing verb, or blame the verb that follows.
+std::optional<std::string> misplaced_option(int argc, char** argv) {
+  for (int k = 1; k < argc; ++k) {
+    const std::string_view word = argv[k];
+    if (word.empty() || word.front() != '-') return std::nullopt;  // the verb comes first
+    if (word == "-h" || word == "--help" || word == "--version") continue;
+    std::string message = "\"" + std::string(word) + "\" is not an option of carom itself";
+    if (word == "-V" || word == "-v") return message + "; did you mean --version?";
+    const bool verb_follows = k + 1 < argc && argv[k + 1][0] != '-';
+    if (verb_follows) {
+      return message + "; a verb's options come after the verb: carom " + std::string(argv[k + 1]) +
+             " " + std::string(word) + " ...";
+    }
+    return message + " (its options are --help and --version; then a verb)";
+  }
+  return std::nullopt;
+}
+
+// CLI11 reports a misspelt verb as a missing one; the user wants to hear about what they typed.
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc,
+                                char** argv) {
+  const bool no_verb = app.get_subcommands().empty();
+  if (no_verb && argc > 1 && argv[1][0] != '-') {
+    return "\"" + std::string(argv[1]) + "\" is not a verb; the verbs are: " + verb_list(app);
+  }
+  if (no_verb) return "give a verb: " + verb_list(app);
+  return error.what();
 }
 
 int run(const CLI::App& app, const carom::cli::Command& command) {
@@ -85,6 +113,12 @@ int parse_and_run(int argc, char** argv) {
   } catch (const CLI::Success& done) {  // --help or --version: printed, nothing else to do
     return app.exit(done);
   } catch (const CLI::ParseError& error) {
+    // An option misplaced before the verb is carom's own error, whatever verb follows it.
+    if (auto misplaced = misplaced_option(argc, argv)) {
+      std::cerr << app.get_name() << ": error: " << *misplaced << " (see '" << app.get_name()
+                << " --help')\n";
+      return kExitUsage;
+    }
     return fail(
         app, kExitUsage,
         parse_error_message(app, error, argc, argv) + " (see '" + speaker(app) + " --help')");

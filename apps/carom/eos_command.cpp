@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -12,7 +13,6 @@
 #include <thread>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "carom/science/exact.hpp"
 #include "exit_codes.hpp"
 #include "gas_command.hpp"
@@ -20,8 +20,11 @@
 #include "gas_report.hpp"
 #include "gas_session.hpp"
 #include "option_value.hpp"
+#include "output_file.hpp"
+#include "progress_bar.hpp"
 #include "readable_number.hpp"
 #include "science_plot.hpp"
+#include "stop_signals.hpp"
 #include "usage_error.hpp"
 
 namespace carom::cli {
@@ -30,6 +33,9 @@ namespace {
 // More points than this is a typo in the step (0.0001 for 0.01), not a sweep.
 constexpr std::size_t kMostPoints = 1000;
 constexpr std::uint64_t kMostThreads = 256;
+// A sweep's points are rounded to the decimals its numbers are written with, at most this many
+// (a double holds 15 to 17 significant digits; packing fractions are below 1).
+constexpr std::size_t kMostDecimals = 15;
 
 struct EosOptions {
   GasOptionText gas;
@@ -62,10 +68,19 @@ std::vector<double> parse_etas(const std::string& text) {
     reject(value,
            "that is " + readable(count) + " points, more than " + std::to_string(kMostPoints));
   }
+  // Each point is the decimal the user means (0.1:0.7:0.1 gives 0.7, not 0.7000000000000001):
+  // from the index, not by adding steps, then rounded to the most decimals the three are
+  // written with.
+  std::size_t decimals = 0;
+  for (const std::string_view part : parts) {
+    const std::size_t point = part.find('.');
+    if (part.find_first_of("eE") != std::string::npos) decimals = kMostDecimals;
+    if (point != std::string::npos) decimals = std::max(decimals, part.size() - point - 1);
+  }
+  const double scale = std::pow(10.0, static_cast<double>(std::min(decimals, kMostDecimals)));
   std::vector<double> etas;
   for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
-    // From the index, not by adding steps, so rounding does not accumulate.
-    etas.push_back(from + static_cast<double>(i) * step);
+    etas.push_back(std::round((from + static_cast<double>(i) * step) * scale) / scale);
   }
   return etas;
 }
@@ -77,11 +92,11 @@ std::string table(const std::vector<GasSpec>& specs, const std::vector<GasOutcom
   for (std::size_t i = 0; i < specs.size(); ++i) {
     const science::GasResults& r = outcomes[i].results;
     const double henderson = science::henderson_z(specs[i].eta);
-    out << "| " << readable(specs[i].eta) << " | " << readable(r.z.mean) << " | "
-        << readable(r.z.error) << " | " << readable(henderson) << " | "
-        << readable((r.z.mean - henderson) / henderson) << " | " << r.collisions << " | "
-        << readable(r.g_contact.mean) << " | " << readable(r.psi6.mean) << " | "
-        << readable(r.diffusion.mean) << " |\n";
+    const ValueAndError z = with_error_parts(r.z.mean, r.z.error);
+    out << "| " << readable(specs[i].eta) << " | " << z.value << " | " << z.error << " | "
+        << rounded(henderson) << " | " << rounded((r.z.mean - henderson) / henderson) << " | "
+        << r.collisions << " | " << rounded(r.g_contact.mean) << " | " << rounded(r.psi6.mean)
+        << " | " << rounded(r.diffusion.mean) << " |\n";
   }
   return out.str();
 }
@@ -140,26 +155,65 @@ int run(const EosOptions& options) {
   if (threads < 1 || threads > kMostThreads) {
     throw UsageError("--threads", options.threads, "between 1 and 256 threads");
   }
+  // A signal stops every point's world; the points completed are written.
+  const StopOnSignals stop_on_signals;
   // One World per thread: each takes the next point not yet taken, so a slow dense point does
   // not hold up the others. Results land in their point's slot, so the order is the input's.
   std::vector<GasOutcome> outcomes(specs.size());
   std::vector<std::exception_ptr> failures(specs.size());
+  std::vector<char> completed(specs.size(), 0);
+  // Each point's fraction done, read by the progress bar.
+  std::vector<std::atomic<double>> done(specs.size());
   std::atomic<std::size_t> next{0};
   const auto worker = [&] {
-    for (std::size_t i = next++; i < specs.size(); i = next++) {
+    for (std::size_t i = next++; i < specs.size() && !StopOnSignals::requested(); i = next++) {
       try {
-        outcomes[i] = run_gas_session(specs[i]);
+        outcomes[i] =
+            run_gas_session(specs[i], [&done, i](double fraction) { done[i].store(fraction); });
+        completed[i] = outcomes[i].interrupted ? 0 : 1;
       } catch (...) {
         failures[i] = std::current_exception();
       }
+      done[i].store(1.0);
     }
   };
   std::vector<std::thread> pool;
   for (std::uint64_t t = 0; t < std::min<std::uint64_t>(threads, specs.size()); ++t)
     pool.emplace_back(worker);
-  for (std::thread& thread : pool) thread.join();
+  {
+    ProgressBar bar(true);
+    std::atomic<bool> finished{false};
+    std::thread watcher([&] {
+      while (!finished.load()) {
+        double sum = 0.0;
+        for (const std::atomic<double>& fraction : done) sum += fraction.load();
+        bar.update(sum / static_cast<double>(specs.size()), "");
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    });
+    for (std::thread& thread : pool) thread.join();
+    finished.store(true);
+    watcher.join();
+  }
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
+  }
+  // After a signal, the points completed before it; otherwise all of them.
+  const std::size_t all_points = specs.size();
+  if (StopOnSignals::requested()) {
+    std::vector<GasSpec> kept_specs;
+    std::vector<GasOutcome> kept_outcomes;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      if (completed[i] == 0) continue;
+      kept_specs.push_back(specs[i]);
+      kept_outcomes.push_back(outcomes[i]);
+    }
+    specs = std::move(kept_specs);
+    outcomes = std::move(kept_outcomes);
+    std::cerr << "carom eos: " << StopOnSignals::what() << " with " << specs.size() << " of "
+              << all_points << " points complete"
+              << (specs.empty() ? ": nothing to write\n" : "; the outputs hold those\n");
+    if (specs.empty()) return StopOnSignals::exit_code();
   }
 
   if (!options.out.empty()) {
@@ -176,8 +230,8 @@ int run(const EosOptions& options) {
         {"eos.svg", eos_plot(specs, outcomes)}};
     for (const auto& [name, content] : files) {
       const std::string path = (std::filesystem::path(options.out) / name).string();
-      if (const auto failure = write_file_atomically(path, content)) {
-        std::cerr << "carom eos: error: cannot write " << path << ": " << *failure << '\n';
+      if (const auto failure = write_output(path, content)) {
+        std::cerr << "carom eos: error: " << *failure << '\n';
         return kExitUsage;
       }
     }
@@ -190,7 +244,7 @@ int run(const EosOptions& options) {
   } else {
     std::cout << table(specs, outcomes);
   }
-  return kExitSuccess;
+  return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;
 }
 
 }  // namespace
@@ -215,7 +269,7 @@ Command add_eos_command(CLI::App& app) {
   eos->add_option("--threads", options->threads, "Points run at once, one World each")
       ->type_name("T")
       ->capture_default_str();
-  eos->add_option("--out", options->out, "Directory for eos.csv, eos.md, eos.svg")
+  eos->add_option("-o,--out", options->out, "Directory for eos.csv, eos.md, eos.svg")
       ->type_name("DIR");
   eos->add_flag("--json", options->json, "Print one JSON object, numbers exact, not a table");
   return {eos, [options] { return run(*options); }};

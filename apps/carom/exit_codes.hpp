@@ -11,5 +11,9 @@ inline constexpr int kExitFailure = 1;
 // an output file that cannot be written. The usual status for usage errors (as in BSD's EX_USAGE
 // family and most GNU tools).
 inline constexpr int kExitUsage = 2;
+// A verb stopped by a signal, its outputs complete up to where it stopped: 128 + the signal, as
+// shells report it (StopOnSignals::exit_code gives the one received).
+inline constexpr int kExitInterrupted = 130;  // SIGINT, Ctrl-C
+inline constexpr int kExitTerminated = 143;   // SIGTERM
 
 }  // namespace carom::cli

@@ -100,7 +100,14 @@ FfmpegPipe::FfmpegPipe(const std::string& ffmpeg, const std::string& path, Video
   posix_spawn_file_actions_adddup2(&actions, ::fileno(log_), STDERR_FILENO);
   posix_spawn_file_actions_adddup2(&actions, ::fileno(log_), STDOUT_FILENO);
   posix_spawn_file_actions_addclose(&actions, pipe_ends[1]);
-  const int spawned = posix_spawn(&child_, argv[0], &actions, nullptr, argv.data(), environ);
+  // ffmpeg in a process group of its own: Ctrl-C at the terminal reaches carom alone, which then
+  // ends the video with the frames it has and lets ffmpeg finish the file.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  const int spawned = posix_spawn(&child_, argv[0], &actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   ::close(pipe_ends[0]);
   if (spawned != 0) {

@@ -9,6 +9,8 @@
 #include "gas_options.hpp"
 #include "gas_report.hpp"
 #include "gas_session.hpp"
+#include "progress_bar.hpp"
+#include "stop_signals.hpp"
 
 namespace carom::cli {
 namespace {
@@ -21,7 +23,18 @@ struct GasCommandOptions {
 
 int run(const GasCommandOptions& options) {
   const GasSpec spec = parse_gas_spec(options.gas);
-  const GasOutcome outcome = run_gas_session(spec);
+  // A signal stops the run; the outputs are then written for what was measured.
+  const StopOnSignals stop_on_signals;
+  GasOutcome outcome;
+  {
+    ProgressBar bar(true);
+    outcome = run_gas_session(spec, [&bar](double fraction) { bar.update(fraction, ""); });
+  }
+  if (!outcome.measured()) {
+    std::cerr << "carom gas: " << StopOnSignals::what()
+              << " while equilibrating: nothing was measured\n";
+    return StopOnSignals::exit_code();
+  }
   if (!options.out.empty()) {
     if (const auto failure = write_gas_files(options.out, spec, outcome)) {
       std::cerr << "carom gas: error: --out \"" << options.out << "\": " << *failure << '\n';
@@ -32,6 +45,11 @@ int run(const GasCommandOptions& options) {
     std::cout << gas_json(spec, outcome).dump() << '\n';
   } else {
     std::cout << gas_text(spec, outcome);
+  }
+  if (outcome.interrupted) {
+    std::cerr << "carom gas: " << StopOnSignals::what() << " after " << outcome.results.blocks_done
+              << " of " << spec.blocks << " blocks; the outputs cover those\n";
+    return StopOnSignals::exit_code();
   }
   return kExitSuccess;
 }
@@ -83,7 +101,7 @@ Command add_gas_command(CLI::App& app) {
       ->type_name("ETA")
       ->capture_default_str();
   add_gas_options(*gas, options->gas);
-  gas->add_option("--out", options->out, "Directory for the histograms (CSV) and plots (SVG)")
+  gas->add_option("-o,--out", options->out, "Directory for the histograms (CSV) and plots (SVG)")
       ->type_name("DIR");
   gas->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
   return {gas, [options] { return run(*options); }};

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <system_error>
 
-#include "atomic_file.hpp"
 #include "carom/science/exact.hpp"
+#include "output_file.hpp"
 #include "readable_number.hpp"
 #include "science_plot.hpp"
 #include "svg_writer.hpp"
@@ -43,7 +43,7 @@ std::string csv(const science::Curve& curve, const std::string& header) {
 }
 
 std::string with_error(const BlockEstimate& estimate) {
-  return readable(estimate.mean) + " ± " + readable(estimate.error);
+  return carom::cli::with_error(estimate.mean, estimate.error);
 }
 
 // A colour for an angle of ψ₆ (−π, π]: the hue goes once round the colour circle over 60° of
@@ -94,6 +94,8 @@ nlohmann::json gas_json(const GasSpec& spec, const GasOutcome& outcome) {
   out["equilibration_collisions"] = outcome.equilibration_collisions;
   out["collisions"] = r.collisions;
   out["blocks"] = spec.blocks;
+  out["blocks_done"] = outcome.interrupted ? r.blocks_done : spec.blocks;
+  out["stopped"] = outcome.interrupted ? nlohmann::json("interrupted") : nlohmann::json(nullptr);
   out["time"] = r.time;
   out["kT"] = r.kT;
   put(out, "Z", r.z);
@@ -127,8 +129,13 @@ std::string gas_text(const GasSpec& spec, const GasOutcome& outcome) {
   out << "hard-disk gas: N = " << spec.n << ", eta = " << readable(spec.eta)
       << (one_size(spec) ? "" : " (two sizes)") << ", box " << readable(spec.layout.side)
       << ", seed " << spec.seed << "\n";
-  out << "  production: " << r.collisions << " collisions in time " << readable(r.time) << ", "
-      << spec.blocks << " blocks; kT = K/N = " << readable(r.kT) << "\n";
+  if (outcome.interrupted) {
+    out << "  stopped by a signal after " << r.blocks_done << " of " << spec.blocks
+        << " blocks: the estimates cover those\n";
+  }
+  out << "  production: " << r.collisions << " collisions in time " << rounded(r.time) << ", "
+      << (outcome.interrupted ? r.blocks_done : spec.blocks)
+      << " blocks; kT = K/N = " << readable(r.kT) << "\n";
   out << "  Z = PA/(NkT)          " << with_error(r.z);
   if (one_size(spec)) out << "   (Henderson " << readable(science::henderson_z(spec.eta)) << ")";
   out << "\n  collision rate        " << with_error(r.collision_rate) << " per disk\n";
@@ -144,8 +151,8 @@ std::string gas_text(const GasSpec& spec, const GasOutcome& outcome) {
     out << "  rate/pressure ratio   " << with_error(r.rate_pressure_ratio) << "   (exact "
         << readable(science::rate_pressure_ratio_exact(spec.n)) << ")\n";
   }
-  out << "  energy drift " << readable(r.energy_drift) << "; " << readable(outcome.wall_seconds)
-      << " s, " << readable(static_cast<double>(r.collisions) / outcome.wall_seconds)
+  out << "  energy drift " << rounded(r.energy_drift) << "; " << rounded(outcome.wall_seconds)
+      << " s, " << readable_count(static_cast<double>(r.collisions) / outcome.wall_seconds)
       << " collisions/s (measurements included)\n";
   return out.str();
 }
@@ -207,9 +214,7 @@ std::optional<std::string> write_gas_files(const std::string& directory, const G
   };
   for (const auto& [name, content] : files) {
     const std::string path = (std::filesystem::path(directory) / name).string();
-    if (const auto failure = write_file_atomically(path, content)) {
-      return "cannot write " + path + ": " + *failure;
-    }
+    if (auto failure = write_output(path, content)) return failure;
   }
   return std::nullopt;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 
 #include "carom/science/gas_monitor.hpp"
 #include "gas_options.hpp"
@@ -43,8 +44,16 @@ struct GasOutcome {
   std::uint64_t equilibration_collisions = 0;  // resolved (at least one per disk)
   double equilibration_rate = 0.0;             // ω seen while equilibrating
   double wall_seconds = 0.0;                   // of the production run, measurements included
+  // Stopped by a signal: during equilibration (nothing measured), or during the measurement
+  // (results.interrupted: estimates over the blocks completed).
+  bool interrupted = false;
+  [[nodiscard]] bool measured() const { return !interrupted || results.blocks_done > 0; }
 };
 
-[[nodiscard]] GasOutcome run_gas_session(const GasSpec& spec);
+// Told now and then (every few thousand events) how far a session has got, from 0 to 1.
+using GasProgress = std::function<void(double fraction)>;
+
+// Runs the session; a signal (StopOnSignals) stops it within a few thousand events.
+[[nodiscard]] GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress = {});
 
 }  // namespace carom::cli

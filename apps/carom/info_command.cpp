@@ -9,6 +9,7 @@
 #include "carom/scene.hpp"
 #include "exit_codes.hpp"
 #include "readable_number.hpp"
+#include "scene_input.hpp"
 
 namespace carom::cli {
 namespace {
@@ -31,7 +32,7 @@ std::string ball_label(const std::vector<SceneBall>& balls, std::size_t i) {
 
 int run(const InfoOptions& options) {
   // An invalid scene throws SceneError: main() prints it as the one message, status 2.
-  const Scene scene = load_scene(options.scene);
+  const Scene scene = read_scene_argument(options.scene);
   const std::vector<SceneBall> balls = expand_balls(scene);
   const SceneSummary s = summarize(scene, balls);
   const std::size_t generated = balls.size() - scene.balls.size();

@@ -1,5 +1,7 @@
 #include "option_value.hpp"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -37,7 +39,19 @@ std::uint64_t parse_whole_number(const OptionValue& value) {
   const char* const end = text.data() + text.size();
   const auto [stop, error] = std::from_chars(text.data(), end, number);
   if (error == std::errc::result_out_of_range) reject(value, "the number is too large");
-  if (error != std::errc{} || stop != end) reject(value, "not a whole number");
+  if (error != std::errc{} || stop != end) {
+    // Say what is wrong with a number that is one, only not written as whole digits.
+    double as_number = 0.0;
+    const auto [number_stop, number_error] = std::from_chars(text.data(), end, as_number);
+    if (number_error == std::errc{} && number_stop == end) {
+      if (as_number < 0.0) reject(value, "must not be negative");
+      if (std::floor(as_number) == as_number && as_number < 1e19) {
+        reject(value, "write it in digits: " + fmt::format("{:.0f}", as_number));
+      }
+      reject(value, "not a whole number");
+    }
+    reject(value, "not a whole number");
+  }
   return number;
 }
 

@@ -7,7 +7,9 @@
 #include <system_error>
 
 #include "cairo_picture.hpp"
+#include "output_file.hpp"
 #include "scene_picture.hpp"
+#include "stop_signals.hpp"
 #include "trail_recorder.hpp"
 
 namespace carom::cli {
@@ -18,20 +20,25 @@ double frame_time(double until, long long frames, long long k) {
 }
 
 // What the first run learns: where the balls go (their centres at contacts too, where trails
-// bend) and how fast they get.
+// bend), how fast they get, and how many frames' times it reached (fewer when a signal stopped
+// it).
 struct RunSurvey {
   ViewBox balls_seen;
   double top_speed = 0.0;
+  long long frames = 0;
 };
 
 RunSurvey survey(const Scene& scene, double until, long long frames) {
   SceneWorld scene_world = make_world(scene);
+  stop_world_on_signals(scene_world.world);
   RunSurvey result;
   std::vector<ContactEvent> contacts;
   for (long long k = 0; k < frames; ++k) {
     const double target = frame_time(until, frames, k);
     contacts.clear();
     step_scene(scene_world, target - scene_world.world.time(), &contacts);
+    if (scene_world.world.stop_reason() == StopReason::interrupted) break;
+    result.frames = k + 1;
     result.balls_seen.add(balls_box(scene_world));
     result.balls_seen.add(contact_centres(scene_world, contacts));
     result.top_speed = std::max(result.top_speed, top_speed(scene_world));
@@ -46,8 +53,13 @@ long long frame_count(double until, double fps) {
 }
 
 AnimationResult render_animation(const Scene& scene, const AnimationRequest& request) {
-  const long long frames = frame_count(request.until, request.fps);
-  const RunSurvey seen = survey(scene, request.until, frames);
+  const long long all_frames = frame_count(request.until, request.fps);
+  const RunSurvey seen = survey(scene, request.until, all_frames);
+  // After a signal in the survey, the frames it reached are drawn (a run it has made already, so
+  // short); otherwise a signal while drawing ends the video at the last frame drawn.
+  const bool surveyed_all = seen.frames == all_frames;
+  if (seen.frames == 0) return {0, 0, 0, true, 0.0};  // stopped before the first frame: no video
+  long long frames = 0;
 
   PictureStyle style;
   style.mode = request.mode;
@@ -59,22 +71,28 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
       layout_image(style.view, request.width, request.mode == ColourMode::speed, true);
   CairoImage image(layout.width, layout.height);
 
-  const std::string temporary = request.path + ".tmp";
+  // Through a link, its target is replaced and the link kept.
+  const std::string target = link_target(request.path);
+  const std::string temporary = target + ".tmp";
+  const TemporaryFileGuard guard(temporary);
   std::error_code ignored;
   try {
     FfmpegPipe ffmpeg(request.ffmpeg, temporary, request.format, layout.width, layout.height,
                       request.fps);
     SceneWorld scene_world = make_world(scene);
+    if (surveyed_all) stop_world_on_signals(scene_world.world);
     std::optional<TrailRecorder> trails;
     if (request.trail_seconds > 0.0) {
       trails.emplace(scene_world, request.trail_seconds);
       style.trails = &*trails;
     }
     std::vector<ContactEvent> contacts;
-    for (long long k = 0; k < frames; ++k) {
+    for (long long k = 0; k < seen.frames; ++k) {
       contacts.clear();
-      const double target = frame_time(request.until, frames, k);
-      step_scene(scene_world, target - scene_world.world.time(), &contacts);
+      const double time = frame_time(request.until, all_frames, k);
+      step_scene(scene_world, time - scene_world.world.time(), &contacts);
+      if (scene_world.world.stop_reason() == StopReason::interrupted) break;
+      frames = k + 1;
       if (trails) trails->record(scene_world, contacts);
       paint_picture(image, layout, draw_scene(scene_world, style));
       ffmpeg.write_frame(image.pixels(), image.stride());
@@ -85,13 +103,16 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
     throw;
   }
   std::error_code renamed;
-  std::filesystem::rename(temporary, request.path, renamed);
+  std::filesystem::rename(temporary, target, renamed);
   if (renamed) {
     std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot rename " + temporary + " to " + request.path + ": " +
+    throw std::runtime_error("cannot write " + request.path +
+                             ": cannot rename its temporary file "
+                             "onto it: " +
                              renamed.message());
   }
-  return {static_cast<int>(frames), layout.width, layout.height};
+  return {static_cast<int>(frames), layout.width, layout.height, frames < all_frames,
+          frame_time(request.until, all_frames, frames - 1)};
 }
 
 }  // namespace carom::cli

@@ -32,6 +32,8 @@ struct AnimationResult {
   int frames = 0;
   int width = 0;
   int height = 0;
+  bool interrupted = false;  // a signal ended the video early, after `frames` frames
+  double end_time = 0.0;     // of the last frame, in time units after the scene's start
 };
 
 // The frame count for a run of `until` at fps: one frame at the start and one per 1/fps after,
@@ -40,7 +42,8 @@ struct AnimationResult {
 
 // Runs the scene twice (the runs are deterministic, so they agree): once to learn the view of
 // an open world and the top speed for the colour scale, once to draw. Throws
-// std::runtime_error when drawing or ffmpeg fails; the file is then left as it was.
+// std::runtime_error when drawing or ffmpeg fails; the file is then left as it was. A signal
+// (StopOnSignals) ends the video at the last frame reached, complete.
 AnimationResult render_animation(const Scene& scene, const AnimationRequest& request);
 
 }  // namespace carom::cli

@@ -13,18 +13,20 @@
 #include <string_view>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "ball_colours.hpp"
 #include "cairo_picture.hpp"
 #include "carom/scene.hpp"
 #include "exit_codes.hpp"
 #include "ffmpeg_pipe.hpp"
 #include "option_value.hpp"
+#include "output_file.hpp"
 #include "readable_number.hpp"
 #include "render_animation.hpp"
 #include "render_plot.hpp"
+#include "scene_input.hpp"
 #include "scene_picture.hpp"
 #include "scene_svg.hpp"
+#include "stop_signals.hpp"
 #include "trail_recorder.hpp"
 #include "usage_error.hpp"
 #include "vector_args.hpp"
@@ -198,10 +200,17 @@ void check_outputs(const RenderOptions& o, RenderRequest& r) {
                        "apt-get install ffmpeg)");
     }
     r.ffmpeg = *ffmpeg;
-    if (auto error = check_writable(o.animate)) throw UsageError("--animate", o.animate, *error);
+    if (auto error = check_output(o.animate)) throw UsageError("--animate", o.animate, *error);
+    // ffmpeg writes the video into a temporary file that is renamed when complete (an MP4's
+    // index comes last), so the target must be a file.
+    if (!replaced_by_rename(o.animate)) {
+      throw UsageError("--animate", o.animate,
+                       "an animation is written to a file (through links too), not to standard "
+                       "output, a device or a FIFO");
+    }
   }
   if (!o.out.empty()) {
-    if (auto error = check_writable(o.out)) throw UsageError("--out", o.out, *error);
+    if (auto error = check_output(o.out)) throw UsageError("--out", o.out, *error);
   }
 }
 
@@ -219,12 +228,19 @@ void advance_to(SceneWorld& scene_world, double time, std::vector<ContactEvent>*
 }
 
 void write_or_throw(const std::string& option, const std::string& path, std::string_view bytes) {
-  if (auto error = write_file_atomically(path, bytes)) throw UsageError(option, path, *error);
+  if (auto error = write_output(path, bytes)) throw UsageError(option, path, *error);
+}
+
+// Where the verb's own lines go: stdout, unless a picture or plot is written there.
+std::ostream& report_stream(const RenderOptions& o) {
+  return o.out == kStandardOutput ? std::cerr : std::cout;
 }
 
 void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequest& r,
                     ColourMode mode, const std::vector<Rgb>& name_colours) {
   SceneWorld scene_world = make_world(scene);
+  // A signal stops the run: the picture is then of the time reached.
+  stop_world_on_signals(scene_world.world);
   std::optional<TrailRecorder> trails;
   if (r.trails > 0.0) {
     // The path is exact from the contacts: where each ball was when the window opened, its
@@ -245,14 +261,14 @@ void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequ
   ViewBox seen = balls_box(scene_world);
   if (trails) seen.add(trails->extent(scene_world.time()));
   frame_picture(style, scene, seen, r.view, o.arrows);
-  style.title = std::filesystem::path(o.scene).filename().string();
+  style.title = std::filesystem::path(scene_source_name(o.scene)).filename().string();
   if (trails) style.trails = &*trails;
   const ScenePicture picture = draw_scene(scene_world, style);
 
   if (*r.picture == PictureFormat::svg) {
     write_or_throw("--out", o.out, scene_svg(picture, style.arrow_seconds));
-    std::cout << "picture: " << o.out << " (t = " << readable(scene_world.time()) << " "
-              << scene.units.time << ")\n";
+    report_stream(o) << "picture: " << o.out << " (t = " << rounded(scene_world.time()) << " "
+                     << scene.units.time << ")\n";
     return;
   }
   const ImageLayout layout = layout_image(picture.view, r.width.value_or(kPictureWidth),
@@ -262,20 +278,23 @@ void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequ
   const std::optional<std::string> png = image.png();
   if (!png) throw std::runtime_error("Cairo could not encode the PNG picture");
   write_or_throw("--out", o.out, *png);
-  std::cout << "picture: " << o.out << " (" << layout.width << "x" << layout.height
-            << " pixels, t = " << readable(scene_world.time()) << " " << scene.units.time << ")\n";
+  report_stream(o) << "picture: " << o.out << " (" << layout.width << "x" << layout.height
+                   << " pixels, t = " << rounded(scene_world.time()) << " " << scene.units.time
+                   << ")\n";
 }
 
 int run(const RenderOptions& o) {
   RenderRequest r = parse(o);
   check_outputs(o, r);
-  const Scene scene = load_scene(o.scene);
-  const std::string title = std::filesystem::path(o.scene).filename().string();
+  // Ctrl-C or SIGTERM stops the run: what is written then shows the time reached.
+  const StopOnSignals stop_on_signals;
+  const Scene scene = read_scene_argument(o.scene);
+  const std::string title = std::filesystem::path(scene_source_name(o.scene)).filename().string();
 
   if (r.plot) {
     write_or_throw("--out", o.out, render_plot(scene, *r.plot, r.until, title));
-    std::cout << "plot: " << o.out << " (" << readable(r.until) << " " << scene.units.time
-              << " of the run)\n";
+    report_stream(o) << "plot: " << o.out << " (" << readable(r.until) << " " << scene.units.time
+                     << " of the run)\n";
   }
 
   if (!r.picture && !r.animation) return kExitSuccess;
@@ -300,9 +319,20 @@ int run(const RenderOptions& o) {
     request.trail_seconds = r.trails;
     request.title = title;
     const AnimationResult result = render_animation(scene, request);
-    std::cout << "animation: " << o.animate << " (" << result.frames << " frames, " << result.width
-              << "x" << result.height << " pixels, " << readable(r.fps) << " fps, "
-              << readable(r.until) << " " << scene.units.time << " of the run)\n";
+    if (result.frames == 0) {
+      std::cerr << "carom render: " << StopOnSignals::what()
+                << " before the first frame: no animation written\n";
+      return StopOnSignals::exit_code();
+    }
+    report_stream(o) << "animation: " << o.animate << " (" << result.frames << " frames, "
+                     << result.width << "x" << result.height << " pixels, " << readable(r.fps)
+                     << " fps, " << readable(result.end_time) << " " << scene.units.time
+                     << " of the run)\n";
+  }
+  if (StopOnSignals::requested()) {
+    std::cerr << "carom render: " << StopOnSignals::what()
+              << "; what was written shows the run up to there\n";
+    return StopOnSignals::exit_code();
   }
   return kExitSuccess;
 }
@@ -341,7 +371,9 @@ Command add_render_command(CLI::App& app) {
 
   auto o = std::make_shared<RenderOptions>();
   render->add_option("SCENE", o->scene, "The scene file (JSON)")->required();
-  render->add_option("--out", o->out, "Write a picture (.svg, .png), or the --plot (.svg), to FILE")
+  render
+      ->add_option("-o,--out", o->out,
+                   "Write a picture (.svg, .png), or the --plot (.svg), to FILE")
       ->type_name("FILE");
   render->add_option("--at", o->at, "Draw the scene at this time after its start")
       ->type_name("T")

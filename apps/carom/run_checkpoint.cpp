@@ -16,11 +16,16 @@
 #include <utility>
 #include <vector>
 
+#include "output_file.hpp"
+#include "stop_signals.hpp"
+
 namespace carom::cli {
 namespace {
 
 constexpr std::string_view kMagic = "CAROMCKP";
-constexpr std::uint32_t kVersion = 1;
+// Version 2 added the time limit and the step in progress; version 1 files read as having neither.
+constexpr std::uint32_t kVersion = 2;
+constexpr std::uint32_t kOldestVersion = 1;
 // magic, version, content size, checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8;
 
@@ -106,6 +111,8 @@ void put_progress(Writer& w, const RunProgress& p) {
   w.put(p.steps);
   w.put(p.dt);
   w.put(p.collisions);
+  w.put(static_cast<std::uint8_t>(p.has_time_limit));
+  w.put(p.time_limit);
   w.put(p.every);
   w.put(p.checkpoint_every);
   w.put(p.run_start_time);
@@ -113,6 +120,8 @@ void put_progress(Writer& w, const RunProgress& p) {
   w.put(p.next_chunk);
   w.put(p.next_checkpoint);
   w.put(p.steps_done);
+  w.put(static_cast<std::uint8_t>(p.in_step));
+  w.put(p.step_end);
   w.put(p.collisions_done);
   w.put(p.ball_ball);
   w.put(p.ball_wall);
@@ -126,7 +135,14 @@ void put_progress(Writer& w, const RunProgress& p) {
   w.put_text(p.scene_file);
 }
 
-RunProgress get_progress(Reader& r) {
+bool get_flag(Reader& r, const char* what) {
+  const auto flag = r.get<std::uint8_t>(what);
+  if (flag > 1)
+    r.fail(std::string("inconsistent content: ") + what + " is " + std::to_string(flag));
+  return flag == 1;
+}
+
+RunProgress get_progress(Reader& r, std::uint32_t version) {
   RunProgress p;
   p.mode = r.get<std::uint8_t>("the run mode");
   if (p.mode > 2) r.fail("inconsistent content: unknown run mode " + std::to_string(p.mode));
@@ -134,6 +150,10 @@ RunProgress get_progress(Reader& r) {
   p.steps = r.get<std::uint64_t>("--steps");
   p.dt = r.get<double>("--dt");
   p.collisions = r.get<std::uint64_t>("--collisions");
+  if (version >= 2) {
+    p.has_time_limit = get_flag(r, "whether --time-limit was given");
+    p.time_limit = r.get<double>("--time-limit");
+  }
   p.every = r.get<double>("--every");
   p.checkpoint_every = r.get<double>("--checkpoint-every");
   p.run_start_time = r.get<double>("the run's start time");
@@ -141,6 +161,10 @@ RunProgress get_progress(Reader& r) {
   p.next_chunk = r.get<std::uint64_t>("the next chunk");
   p.next_checkpoint = r.get<std::uint64_t>("the next checkpoint");
   p.steps_done = r.get<std::uint64_t>("the steps done");
+  if (version >= 2) {
+    p.in_step = get_flag(r, "whether a step is in progress");
+    p.step_end = r.get<double>("the step's end");
+  }
   p.collisions_done = r.get<std::uint64_t>("the collisions done");
   p.ball_ball = r.get<std::uint64_t>("the ball-ball count");
   p.ball_wall = r.get<std::uint64_t>("the ball-wall count");
@@ -199,8 +223,9 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
   if (bytes.size() < kHeaderSize) damaged(file, "truncated: the header is incomplete");
   Reader header(bytes.substr(kMagic.size(), kHeaderSize - kMagic.size()), file);
   const auto version = header.get<std::uint32_t>("the version");
-  if (version != kVersion) {
-    damaged(file, "unsupported version " + std::to_string(version) + " (this build reads version " +
+  if (version < kOldestVersion || version > kVersion) {
+    damaged(file, "unsupported version " + std::to_string(version) +
+                      " (this build reads versions " + std::to_string(kOldestVersion) + " to " +
                       std::to_string(kVersion) + ")");
   }
   const auto size = header.get<std::uint64_t>("the content size");
@@ -216,7 +241,7 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
   if (checksum(content) != expected) damaged(file, "checksum mismatch: the file is damaged");
 
   Reader r(content, file);
-  RunProgress progress = get_progress(r);
+  RunProgress progress = get_progress(r, version);
   const auto start_time = r.get<double>("the start time");
   Scene scene;
   try {
@@ -265,8 +290,11 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
           std::move(progress)};
 }
 
-std::optional<std::string> write_checkpoint(const std::string& path, std::string_view bytes) {
+std::optional<std::string> write_checkpoint(const std::string& name, std::string_view bytes) {
+  // Through a link, the checkpoints rotate beside its target; the link stays.
+  const std::string path = link_target(name);
   const std::string temporary = path + ".tmp";
+  const TemporaryFileGuard guard(temporary);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return "cannot create " + temporary + ": " + std::strerror(errno);
   std::size_t written = 0;

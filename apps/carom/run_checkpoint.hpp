@@ -23,6 +23,8 @@ struct RunProgress {
   std::uint64_t steps = 0;
   double dt = 0.0;
   std::uint64_t collisions = 0;
+  bool has_time_limit = false;  // --collisions with --time-limit
+  double time_limit = 0.0;      // scene time
   double every = 0.0;
   double checkpoint_every = 0.0;
   // Where it stands.
@@ -31,6 +33,9 @@ struct RunProgress {
   std::uint64_t next_chunk = 1;
   std::uint64_t next_checkpoint = 1;
   std::uint64_t steps_done = 0;
+  // --steps: a step cut short by a signal, and the world time it ends at (fixed when it began).
+  bool in_step = false;
+  double step_end = 0.0;
   std::uint64_t collisions_done = 0;  // contacts counted by --collisions
   std::uint64_t ball_ball = 0;
   std::uint64_t ball_wall = 0;

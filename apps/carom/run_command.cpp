@@ -11,27 +11,33 @@
 #include <string>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "carom/scene.hpp"
 #include "exit_codes.hpp"
-#include "interrupt.hpp"
 #include "option_value.hpp"
+#include "output_file.hpp"
 #include "progress_bar.hpp"
 #include "readable_number.hpp"
 #include "run_checkpoint.hpp"
 #include "run_outputs.hpp"
 #include "run_report.hpp"
+#include "scene_input.hpp"
+#include "stop_signals.hpp"
 #include "usage_error.hpp"
 #include "wall_clock.hpp"
 
 namespace carom::cli {
 namespace {
 
-// Without --every, a run to a time is cut into this many chunks (for the progress bar and for
-// Ctrl-C, which is honoured between chunks), and a run of collisions likewise.
+// Without --every, a run to a time is cut into this many chunks (for the progress bar and the
+// events file, which are brought up to date after each), and a run of collisions likewise.
 constexpr double kChunksPerRun = 200.0;
 // Without --every, `--until` writes this many frames after the first.
 constexpr double kDefaultFrames = 100.0;
+// What an output takes, for the check of free space before a run: a frame's line for a ball and
+// an event's JSON line, a quarter above what the box of 1000 writes (95 bytes a ball in CSV, 93 in
+// extended XYZ; 225 an event), since long names and full-precision numbers take more.
+constexpr double kFrameBytesPerBall = 120.0;
+constexpr double kEventBytes = 280.0;
 
 struct RunOptions {
   std::string scene;
@@ -39,7 +45,9 @@ struct RunOptions {
   std::string steps;
   std::string dt;
   std::string collisions;
+  std::string time_limit;
   std::string frames;
+  std::string format;
   std::string every;
   std::string events;
   std::string save;
@@ -59,6 +67,7 @@ struct RunPlan {
   std::uint64_t steps = 0;
   double dt = 0.0;
   std::uint64_t collisions = 0;
+  std::optional<double> time_limit;  // --collisions: scene time not to run past
   std::optional<double> every;
   std::optional<double> checkpoint_every;
   std::optional<FrameFormat> frame_format;
@@ -106,6 +115,13 @@ RunPlan parse(const RunOptions& o) {
   if (!o.dt.empty() && plan.mode != Mode::steps) {
     throw UsageError("--dt", o.dt, "--dt goes with --steps");
   }
+  if (!o.time_limit.empty()) {
+    if (plan.mode != Mode::collisions) {
+      throw UsageError("--time-limit", o.time_limit,
+                       "--time-limit goes with --collisions (--until is a time already)");
+    }
+    plan.time_limit = parse_finite_number(o.time_limit, {"--time-limit", o.time_limit, "a time"});
+  }
   if (!o.every.empty()) {
     if (plan.mode == Mode::collisions) {
       throw UsageError("--every", o.every,
@@ -115,11 +131,16 @@ RunPlan parse(const RunOptions& o) {
     if (o.frames.empty()) throw UsageError("--every", o.every, "--every goes with --frames");
     plan.every = parse_positive("--every", o.every);
   }
-  if (!o.frames.empty()) {
+  if (!o.format.empty()) {
+    if (o.frames.empty()) throw UsageError("--format", o.format, "--format goes with --frames");
+    plan.frame_format = frame_format_of("." + o.format);
+    if (!plan.frame_format) throw UsageError("--format", o.format, "give csv or xyz");
+  } else if (!o.frames.empty()) {
     plan.frame_format = frame_format_of(o.frames);
     if (!plan.frame_format) {
       throw UsageError("--frames", o.frames,
-                       "the file name must end in .csv (CSV) or .xyz (extended XYZ)");
+                       "the file name must end in .csv (CSV) or .xyz (extended XYZ), or give "
+                       "--format csv|xyz (for - and other names without one)");
     }
   }
   if (!o.checkpoint_every.empty()) {
@@ -128,6 +149,9 @@ RunPlan parse(const RunOptions& o) {
                        "--checkpoint-every goes with --checkpoint FILE");
     }
     plan.checkpoint_every = parse_positive("--checkpoint-every", o.checkpoint_every);
+  }
+  if (o.resume == kStandardOutput) {
+    throw UsageError("--resume", o.resume, "a checkpoint is read from a file, not standard input");
   }
   // Every output is checked before any work, and no two may be the same file.
   const std::vector<std::pair<const char*, const std::string*>> outputs{
@@ -139,16 +163,51 @@ RunPlan parse(const RunOptions& o) {
     const std::string& path = *outputs[i].second;
     if (path.empty()) continue;
     for (std::size_t j = 0; j < i; ++j) {
-      if (*outputs[j].second == path) {
+      if (same_output(*outputs[j].second, path)) {
         throw UsageError(outputs[i].first, path,
                          std::string("the same file as ") + outputs[j].first);
       }
     }
-    if (const auto problem = check_writable(path)) {
+    if (const auto problem = check_output(path)) {
       throw UsageError(outputs[i].first, path, "cannot be written: " + *problem);
     }
   }
+  if (!o.checkpoint.empty() && !replaced_by_rename(o.checkpoint)) {
+    throw UsageError("--checkpoint", o.checkpoint,
+                     "a checkpoint is a file replaced at every write (the one before kept as "
+                     "FILE.prev): give a plain file, not standard output, a device or a FIFO");
+  }
   return plan;
+}
+
+// Refuses, before the run, an output that would not fit in its folder's free space: the frames
+// (their number is known from the plan) and, for --collisions, the events.
+void check_room_for_outputs(const RunOptions& o, const RunPlan& plan, std::size_t balls,
+                            double start_time) {
+  if (!o.frames.empty()) {
+    double frames = 2.0;
+    if (plan.mode == Mode::until) {
+      const double span = plan.until - start_time;
+      frames += span / plan.every.value_or(span / kDefaultFrames);
+    } else if (plan.mode == Mode::steps) {
+      const double span = static_cast<double>(plan.steps) * plan.dt;
+      frames += span / plan.every.value_or(plan.dt);
+    }
+    const double bytes = frames * static_cast<double>(balls) * kFrameBytesPerBall;
+    if (const auto problem = check_room(o.frames, bytes)) {
+      throw UsageError("--frames", o.frames,
+                       "refused before the run: " + readable(frames) + " frames of " +
+                           std::to_string(balls) + " balls " + *problem);
+    }
+  }
+  if (!o.events.empty() && plan.mode == Mode::collisions) {
+    const double bytes = static_cast<double>(plan.collisions) * kEventBytes;
+    if (const auto problem = check_room(o.events, bytes)) {
+      throw UsageError(
+          "--events", o.events,
+          "refused before the run: " + std::to_string(plan.collisions) + " contacts " + *problem);
+    }
+  }
 }
 
 double movable_mass(const SceneWorld& built) {
@@ -165,6 +224,35 @@ std::size_t live_balls(const SceneWorld& built) {
   return count;
 }
 
+// Whether energy and momentum should stay as they are: every restitution 1, no pockets, and no
+// immovable ball moving (which does work on the balls it meets). Otherwise their changes are
+// physics, not numerical drift.
+bool conservative(const SceneWorld& built) {
+  const Scene& scene = built.scene;
+  if (!scene.pockets.empty() || scene.world.restitution != 1.0) return false;
+  for (const SceneBall& ball : scene.balls) {
+    if (ball.restitution && *ball.restitution != 1.0) return false;
+    if (ball.mass == kImmovable && (ball.velocity.x != 0.0 || ball.velocity.y != 0.0)) return false;
+  }
+  return true;
+}
+
+// Why a run stopped short, for the closing line ("" when it did what it was asked).
+std::string stop_note(StopReason reason) {
+  switch (reason) {
+    case StopReason::no_more_contacts:
+      return " (stopped: no contact will ever happen again)";
+    case StopReason::time_limit:
+      return " (stopped at the --time-limit)";
+    case StopReason::interrupted:
+      return " (stopped by a signal)";
+    case StopReason::stop_condition:
+    case StopReason::none:
+      break;
+  }
+  return "";
+}
+
 // The options that decide a run's course, as a user would write them (for a resume that differs).
 std::string plan_text(const RunProgress& p) {
   std::string text;
@@ -177,6 +265,7 @@ std::string plan_text(const RunProgress& p) {
       break;
     case Mode::collisions:
       text = "--collisions " + std::to_string(p.collisions);
+      if (p.has_time_limit) text += " --time-limit " + exact_number(p.time_limit);
       break;
   }
   if (p.every > 0.0) text += " --every " + exact_number(p.every);
@@ -192,14 +281,19 @@ RunProgress plan_progress(const RunPlan& plan) {
   p.steps = plan.steps;
   p.dt = plan.dt;
   p.collisions = plan.collisions;
+  p.has_time_limit = plan.time_limit.has_value();
+  p.time_limit = plan.time_limit.value_or(0.0);
   p.every = plan.every.value_or(0.0);
   p.checkpoint_every = plan.checkpoint_every.value_or(0.0);
   return p;
 }
 
 // The run itself: advances chunk by chunk, writing frames, events and checkpoints as it goes.
-// All its position in the run lives in progress_, so that a run resumed from a checkpoint takes
-// the same chunks, writes frames at the same times and counts on from the same numbers.
+// All its position in the run lives in state_, so that a run resumed from a checkpoint takes
+// the same chunks, writes frames at the same times and counts on from the same numbers. A signal
+// stops the world within a few thousand events, at an event boundary inside a chunk: the chunk's
+// contacts are written, the frame and checkpoint due at its end are not (they belong to a time
+// not reached), and the end frame and checkpoint hold the stop.
 class Runner {
  public:
   Runner(const RunOptions& options, const RunPlan& plan, SceneWorld& built, RunProgress progress,
@@ -226,9 +320,10 @@ class Runner {
     return std::nullopt;
   }
 
-  // Call while a StopOnInterrupt lives.
+  // Call while a StopOnSignals lives.
   void run(RunOutcome& outcome) {
     start_ = state_.run_start_time;
+    stop_world_on_signals(built_.world, [this](const RunStatus& status) { on_progress(status); });
     // A resumed run's frame at its start was written by the run that made the checkpoint.
     if (!resumed_) write_frame();
     switch (plan_.mode) {
@@ -242,11 +337,14 @@ class Runner {
         run_collisions();
         break;
     }
+    built_.world.set_progress_callback(nullptr);
     if (frames_ && state_.last_frame_time != built_.time()) write_frame();
     progress_.finish();
     // The end (or the stop) is a checkpoint too, unless the last one already holds it.
     if (dirty_) checkpoint();
-    outcome.interrupted = StopOnInterrupt::requested();
+    if (StopOnSignals::requested()) stopped_ = StopReason::interrupted;
+    outcome.interrupted = stopped_ == StopReason::interrupted;
+    outcome.stopped = stopped_;
     outcome.collisions = state_.ball_ball + state_.ball_wall + state_.potted;
     outcome.ball_ball = state_.ball_ball;
     outcome.ball_wall = state_.ball_wall;
@@ -268,7 +366,43 @@ class Runner {
 
  private:
   [[nodiscard]] bool stop_requested() const {
-    return StopOnInterrupt::requested() || checkpoint_problem_.has_value();
+    return StopOnSignals::requested() || checkpoint_problem_.has_value();
+  }
+
+  // Whether the world's last run was cut short by a signal.
+  [[nodiscard]] bool interrupted() const {
+    return built_.world.stop_reason() == StopReason::interrupted;
+  }
+
+  // The run's fraction done, for the progress bar, given the world's status within a chunk.
+  [[nodiscard]] double fraction_done(const RunStatus& status) const {
+    switch (plan_.mode) {
+      case Mode::until: {
+        const double span = plan_.until - start_;
+        return span > 0.0 ? (built_.start_time + status.time - start_) / span : 1.0;
+      }
+      case Mode::steps:
+        return static_cast<double>(state_.steps_done) / static_cast<double>(plan_.steps);
+      case Mode::collisions:
+        return static_cast<double>(state_.collisions_done + status.contacts) /
+               static_cast<double>(plan_.collisions);
+    }
+    return 0.0;
+  }
+
+  // Inside a chunk: the bar moves on even when no contact happens (balls crossing cells in a
+  // periodic world that never meet, or a long flight to the next contact).
+  void on_progress(const RunStatus& status) {
+    const double seconds = seconds_since(clock_start_);
+    const std::uint64_t done =
+        state_.ball_ball + state_.ball_wall + state_.potted + status.contacts - counted_before_;
+    const std::uint64_t crossings = status.events - status.contacts;
+    progress_.update(fraction_done(status),
+                     readable(seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0) +
+                         " collisions/s  t=" + readable(built_.start_time + status.time) +
+                         (crossings > 0 ? "  " + readable(static_cast<double>(crossings)) +
+                                              " cell crossings in this chunk"
+                                        : ""));
   }
 
   void after_chunk(double fraction) {
@@ -324,7 +458,8 @@ class Runner {
     const double end = plan_.until;
     const double span = end - start_;
     const double every = plan_.every.value_or(span / kDefaultFrames);
-    // Chunks no longer than a frame interval nor 1/200 of the run, so Ctrl-C is honoured soon.
+    // Chunks no longer than a frame interval nor 1/200 of the run, for the events file and the
+    // progress bar.
     const double chunk = std::min(every, span / kChunksPerRun);
     // Frame k falls at start + k·every; computed from k, never accumulated, so no drift. The same
     // for chunks and checkpoints, so a resumed run cuts its chunks where the first run would have.
@@ -335,14 +470,19 @@ class Runner {
       const double chunk_time = start_ + static_cast<double>(next_chunk) * chunk;
       const double checkpoint_at = checkpoint_time();
       const double target = std::min({frame_time, chunk_time, checkpoint_at, end});
-      // The clock may pass a target by a rounding; a step is never negative.
-      step_scene(built_, std::max(0.0, target - built_.time()), &contacts_);
-      if (target >= frame_time) {
+      // The world's end is computed from the target alone, so that a run stopped inside a chunk
+      // and resumed ends the chunk at the same instant. The clock may pass a target by a
+      // rounding; a run never goes back.
+      const double world_end = std::max(target - built_.start_time, built_.world.time());
+      run_scene_until(built_, world_end, &contacts_);
+      const bool reached = !interrupted();
+      if (reached && target >= frame_time) {
         write_frame();
         ++next_frame;
       }
-      if (target >= chunk_time) ++next_chunk;
+      if (reached && target >= chunk_time) ++next_chunk;
       after_chunk(span > 0.0 ? (built_.time() - start_) / span : 1.0);
+      if (!reached) break;
       if (target >= checkpoint_at) {
         ++state_.next_checkpoint;
         checkpoint();
@@ -355,7 +495,18 @@ class Runner {
     const double every = plan_.every.value_or(plan_.dt);
     std::uint64_t& next_frame = state_.next_frame;
     while (state_.steps_done < plan_.steps && !stop_requested()) {
-      step_scene(built_, plan_.dt, &contacts_);
+      // A step's end is fixed when it starts (world time + dt, as World::step takes it) and kept
+      // in the progress, so that a step cut by a signal is finished by the resumed run.
+      if (!state_.in_step) {
+        state_.in_step = true;
+        state_.step_end = built_.world.time() + plan_.dt;
+      }
+      run_scene_until(built_, state_.step_end, &contacts_);
+      if (interrupted()) {
+        after_chunk(static_cast<double>(state_.steps_done) / static_cast<double>(plan_.steps));
+        break;
+      }
+      state_.in_step = false;
       ++state_.steps_done;
       // A frame after the step that reaches frame time k·every (to rounding of the steps' sum).
       const double elapsed = built_.time() - start_;
@@ -371,13 +522,22 @@ class Runner {
   void run_collisions() {
     const auto chunk = static_cast<std::uint64_t>(
         std::max(1.0, std::floor(static_cast<double>(plan_.collisions) / kChunksPerRun)));
+    const double limit = plan_.time_limit ? *plan_.time_limit - built_.start_time
+                                          : std::numeric_limits<double>::infinity();
     std::uint64_t& done = state_.collisions_done;
     while (done < plan_.collisions && !stop_requested()) {
+      if (built_.world.time() >= limit) {
+        stopped_ = StopReason::time_limit;
+        break;
+      }
       const std::uint64_t ask = std::min(chunk, plan_.collisions - done);
-      const std::uint64_t got = run_scene_collisions(built_, ask, &contacts_);
+      const std::uint64_t got = run_scene_collisions(built_, ask, &contacts_, nullptr, limit);
       done += got;
       after_chunk(static_cast<double>(done) / static_cast<double>(plan_.collisions));
-      if (got < ask) break;  // no contact will ever happen again
+      if (got < ask) {  // interrupted, at the time limit, or no contact will ever happen again
+        stopped_ = built_.world.stop_reason();
+        break;
+      }
       checkpoint_if_due();
     }
   }
@@ -393,6 +553,7 @@ class Runner {
   // Contacts counted before this process started (for the progress bar's rate).
   std::uint64_t counted_before_ = state_.ball_ball + state_.ball_wall + state_.potted;
   bool dirty_ = false;  // chunks run since the last checkpoint
+  StopReason stopped_ = StopReason::none;
   std::optional<std::string> checkpoint_problem_;
   std::optional<FrameWriter> frames_;
   std::optional<EventWriter> events_;
@@ -405,7 +566,7 @@ class Runner {
 // plan checked against the one it was made with).
 Checkpoint starting_point(const RunOptions& options, RunPlan& plan) {
   if (options.resume.empty()) {
-    const Scene scene = load_scene(options.scene);
+    const Scene scene = read_scene_argument(options.scene);
     Checkpoint start{make_world(scene), plan_progress(plan)};
     const SceneWorld& built = start.built;
     RunProgress& p = start.progress;
@@ -415,7 +576,7 @@ Checkpoint starting_point(const RunOptions& options, RunPlan& plan) {
     p.momentum_before_x = built.world.momentum().x;
     p.momentum_before_y = built.world.momentum().y;
     p.movable_mass = movable_mass(built);
-    p.scene_file = options.scene;
+    p.scene_file = scene_source_name(options.scene);
     return start;
   }
   Checkpoint start = read_checkpoint(options.resume);
@@ -450,8 +611,10 @@ int run(const RunOptions& options) {
                      "the scene starts at time " + readable(built.time()) +
                          "; --until is the time to run to, not a duration");
   }
+  check_room_for_outputs(options, plan, live_balls(built), built.time());
   RunOutcome outcome;
   outcome.scene = p.scene_file;
+  outcome.conservative = conservative(built);
   outcome.setup_seconds = seconds_since(setup_start);
   outcome.balls_at_start = p.balls_at_start;
   outcome.start_time = p.run_start_time;
@@ -459,8 +622,8 @@ int run(const RunOptions& options) {
   outcome.momentum_before = {p.momentum_before_x, p.momentum_before_y};
   outcome.movable_mass = p.movable_mass;
 
-  // Ctrl-C from here on stops the run cleanly; before, nothing has been written yet.
-  const StopOnInterrupt interrupt;
+  // Ctrl-C and SIGTERM from here on stop the run cleanly; before, nothing has been written yet.
+  const StopOnSignals stop_on_signals;
   Runner runner(options, plan, built, start.progress, !options.resume.empty());
   if (const auto problem = runner.open()) {
     std::cerr << "carom run: error: " << *problem << '\n';
@@ -473,8 +636,7 @@ int run(const RunOptions& options) {
     return kExitFailure;
   }
   if (!options.save.empty()) {
-    if (const auto problem =
-            write_file_atomically(options.save, to_json_text(capture_scene(built)))) {
+    if (const auto problem = write_output(options.save, to_json_text(capture_scene(built)))) {
       std::cerr << "carom run: error: " << *problem << '\n';
       return kExitFailure;
     }
@@ -485,21 +647,25 @@ int run(const RunOptions& options) {
   outcome.energy_after = built.world.kinetic_energy();
   outcome.momentum_after = built.world.momentum();
 
+  // An output written to standard output keeps it to itself: the summary goes to stderr.
+  const bool stdout_taken = options.frames == kStandardOutput ||
+                            options.events == kStandardOutput || options.save == kStandardOutput;
+  std::ostream& report = stdout_taken ? std::cerr : std::cout;
   if (options.stats) {
     if (options.json) {
-      std::cout << run_json(outcome).dump() << '\n';
+      report << run_json(outcome).dump() << '\n';
     } else {
-      std::cout << run_text(outcome);
+      report << run_text(outcome);
     }
   } else if (!options.quiet) {
-    std::cout << "ran " << outcome.scene << " from t=" << readable(outcome.start_time)
-              << " to t=" << readable(outcome.end_time) << ": " << outcome.collisions
-              << " collisions\n";
+    report << "ran " << outcome.scene << " from t=" << readable(outcome.start_time)
+           << " to t=" << readable(outcome.end_time) << ": " << outcome.collisions << " collisions"
+           << stop_note(outcome.stopped) << "\n";
   }
   if (outcome.interrupted) {
-    std::cerr << "carom run: interrupted at t=" << readable(outcome.end_time)
+    std::cerr << "carom run: " << StopOnSignals::what() << " at t=" << readable(outcome.end_time)
               << "; the outputs are complete up to there\n";
-    return kExitInterrupted;
+    return StopOnSignals::exit_code();
   }
   return kExitSuccess;
 }
@@ -511,35 +677,44 @@ Command add_run_command(CLI::App& app) {
   verb->footer(
       "Advances the scene's world in exact event order (every contact at the time it\n"
       "happens) by one of: --until T (to scene time T), --steps K --dt DT (K steps of DT),\n"
-      "or --collisions K (the next K contacts; pocket contacts count). In an open world\n"
-      "whose balls fly apart for good, --collisions waits for contacts that never come\n"
-      "(World::run_collisions keeps going); use --until there.\n\n"
-      "Outputs, each written to FILE.tmp and renamed when complete (also on Ctrl-C, which\n"
-      "stops the run after the current chunk; exit status 130):\n"
+      "or --collisions K (the next K contacts; pocket contacts count). SCENE - reads the\n"
+      "scene from standard input. --collisions returns early when it can prove that no\n"
+      "contact will ever happen (balls flying apart, all at rest); some endless runs cannot\n"
+      "be told apart from long ones (two balls in a periodic cell on a slanted orbit that\n"
+      "never meets): give --time-limit T there, or stop it with Ctrl-C.\n\n"
+      "Outputs: a file is written to FILE.tmp beside it (beside a link's target) and renamed\n"
+      "onto it when complete; - (standard output), devices and FIFOs are written directly.\n"
+      "Ctrl-C or SIGTERM stops the run within a few thousand events with every output\n"
+      "complete up to there (exit status 130 or 143); a second one ends it at once.\n"
       "  --frames FILE   positions and velocities at the start, every --every time units,\n"
       "                  and at the end: .csv (time,index,name,x,y,vx,vy,radius) or .xyz\n"
-      "                  (extended XYZ, opens in OVITO and ASE). Without --every: 100\n"
+      "                  (extended XYZ, opens in OVITO and ASE); --format csv|xyz for a\n"
+      "                  name without either (-, /dev/stdout, a FIFO). Without --every: 100\n"
       "                  frames for --until, one per step for --steps.\n"
       "  --events FILE   every contact as a JSON line: time, kind (ball_ball, ball_wall,\n"
       "                  potted), scene ball indices, wall, point, normal, approach_speed,\n"
       "                  impulse.\n"
       "  --save FILE     the end state as a scene file to continue from.\n"
-      "  --checkpoint FILE  at the end (and on Ctrl-C) and, with --checkpoint-every T,\n"
+      "  --checkpoint FILE  at the end (and on a stop) and, with --checkpoint-every T,\n"
       "                  each time T of scene time has passed: the world and the run's\n"
       "                  progress, written to FILE.tmp, synced and renamed onto FILE; the\n"
       "                  checkpoint before moves to FILE.prev. --until runs are cut at the\n"
       "                  checkpoint times; --steps and --collisions runs check after each\n"
       "                  step or chunk.\n"
       "  --resume FILE   (instead of SCENE) continue from a checkpoint with the same\n"
-      "                  --until/--steps/--dt/--collisions/--every options: the run ends\n"
-      "                  bit for bit as the run that wrote the checkpoint. --frames and --events "
-      "are new\n"
-      "                  files that hold what happens after the checkpoint; --stats counts\n"
-      "                  and drifts cover the whole run. A damaged checkpoint is refused\n"
-      "                  (exit 2). Details: docs/checkpoints.md.\n"
-      "  --stats         collisions, collisions per second, energy and momentum drift,\n"
-      "                  wall time (--json: one JSON object).\n"
-      "A progress bar is drawn on stderr when it is a terminal (--quiet: none).\n\n"
+      "                  --until/--steps/--dt/--collisions/--time-limit/--every options: the\n"
+      "                  run ends bit for bit as the run that wrote the checkpoint, even one\n"
+      "                  stopped by a signal. --frames and --events are new files that hold\n"
+      "                  what happens after the checkpoint; --stats counts and changes cover\n"
+      "                  the whole run. A damaged checkpoint is refused (exit 2). Details:\n"
+      "                  docs/checkpoints.md.\n"
+      "  --stats         collisions, collisions per second, energy and momentum change\n"
+      "                  (\"drift\" in a scene that conserves them), wall time, and why a run\n"
+      "                  stopped short (--json: one JSON object, \"stopped\": null or one of\n"
+      "                  \"no_more_contacts\", \"time_limit\", \"interrupted\").\n"
+      "An output whose estimated size exceeds its folder's free space is refused before\n"
+      "the run. A progress bar is drawn on stderr when it is a terminal (--quiet: none);\n"
+      "the summary goes to stderr when an output is -.\n\n"
       "Examples:\n"
       "  carom run examples/billiards.json --until 10 --stats --frames break.csv\n"
       "  carom run examples/periodic-gas.json --collisions 1000000 --stats --json\n"
@@ -547,15 +722,21 @@ Command add_run_command(CLI::App& app) {
       "end.json\n"
       "  carom run examples/periodic-gas.json --until 1000 --checkpoint gas.ckpt "
       "--checkpoint-every 50\n"
-      "  carom run --resume gas.ckpt --until 1000 --checkpoint gas.ckpt");
+      "  carom run --resume gas.ckpt --until 1000 --checkpoint gas.ckpt\n"
+      "  carom run examples/newtons-cradle.json --until 1 --events - --quiet | head");
   auto options = std::make_shared<RunOptions>();
-  verb->add_option("SCENE", options->scene, "Scene file (JSON, docs/scenes.md)");
+  verb->add_option("SCENE", options->scene, "Scene file (JSON, docs/scenes.md); - stdin");
   verb->add_option("--until", options->until, "Run to this scene time")->type_name("T");
   verb->add_option("--steps", options->steps, "Run this many steps of --dt")->type_name("K");
   verb->add_option("--dt", options->dt, "Length of a step")->type_name("DT");
   verb->add_option("--collisions", options->collisions, "Run this many contacts")->type_name("K");
-  verb->add_option("--frames", options->frames, "Write frames to FILE (.csv or .xyz)")
+  verb->add_option("--time-limit", options->time_limit,
+                   "With --collisions: never run past this scene time")
+      ->type_name("T");
+  verb->add_option("--frames", options->frames, "Write frames to FILE (.csv or .xyz; - stdout)")
       ->type_name("FILE");
+  verb->add_option("--format", options->format, "Frames' format when FILE has no extension")
+      ->type_name("csv|xyz");
   verb->add_option("--every", options->every, "Time between frames")->type_name("DT");
   verb->add_option("--events", options->events, "Write every contact to FILE (JSON lines)")
       ->type_name("FILE");

@@ -6,10 +6,6 @@
 
 namespace carom::cli {
 
-// Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it); its outputs are
-// complete up to where it stopped.
-inline constexpr int kExitInterrupted = 130;
-
 // Adds the run verb and its options to app.
 [[nodiscard]] Command add_run_command(CLI::App& app);
 

@@ -1,5 +1,5 @@
 // carom tool: what `carom run` writes while it runs — frames (CSV or extended XYZ) and contact
-// events (JSON lines) — each streamed to a temporary file that takes its name only when complete.
+// events (JSON lines) — each streamed to an OutputFile (a file appears only when complete).
 #pragma once
 
 #include <cstdint>
@@ -8,8 +8,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "atomic_file.hpp"
 #include "carom/scene.hpp"
+#include "output_file.hpp"
 
 namespace carom::cli {
 
@@ -45,7 +45,7 @@ class FrameWriter {
  private:
   FrameFormat format_;
   const Scene* scene_;
-  AtomicOutput out_;
+  OutputFile out_;
   std::uint64_t frames_ = 0;
   std::string buffer_;
 };
@@ -60,7 +60,7 @@ class EventWriter {
   [[nodiscard]] std::optional<std::string> commit() { return out_.commit(); }
 
  private:
-  AtomicOutput out_;
+  OutputFile out_;
   std::string buffer_;
 };
 

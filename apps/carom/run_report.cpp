@@ -6,11 +6,11 @@
 
 namespace carom::cli {
 
-double RunOutcome::energy_drift() const {
+double RunOutcome::energy_change() const {
   return energy_before > 0.0 ? (energy_after - energy_before) / energy_before : 0.0;
 }
 
-double RunOutcome::momentum_drift() const {
+double RunOutcome::momentum_change() const {
   const double scale = std::sqrt(2.0 * movable_mass * energy_before);
   return scale > 0.0 ? length(momentum_after - momentum_before) / scale : 0.0;
 }
@@ -19,23 +19,62 @@ double RunOutcome::collisions_per_second() const {
   return wall_seconds > 0.0 ? static_cast<double>(collisions) / wall_seconds : 0.0;
 }
 
+std::string stop_reason_name(StopReason reason) {
+  switch (reason) {
+    case StopReason::no_more_contacts:
+      return "no_more_contacts";
+    case StopReason::time_limit:
+      return "time_limit";
+    case StopReason::interrupted:
+      return "interrupted";
+    case StopReason::stop_condition:
+      return "stop_condition";
+    case StopReason::none:
+      break;
+  }
+  return "";
+}
+
+namespace {
+
+// Why a run stopped short, in words.
+std::string stop_text(StopReason reason) {
+  switch (reason) {
+    case StopReason::no_more_contacts:
+      return "no contact will ever happen again";
+    case StopReason::time_limit:
+      return "reached --time-limit";
+    case StopReason::interrupted:
+      return "interrupted by a signal";
+    case StopReason::stop_condition:
+      return "the stop condition";
+    case StopReason::none:
+      break;
+  }
+  return "";
+}
+
+}  // namespace
+
 std::string run_text(const RunOutcome& o) {
+  // Changes of energy and momentum are drift only where the scene conserves them.
+  const std::string change = o.conservative ? "drift" : "change";
   std::string text;
   text += "scene           " + o.scene + "\n";
-  text += "time            " + readable(o.start_time) + " -> " + readable(o.end_time) +
-          (o.interrupted ? " (interrupted)" : "") + "\n";
+  text += "time            " + readable(o.start_time) + " -> " + readable(o.end_time) + "\n";
+  if (o.stopped != StopReason::none) text += "stopped         " + stop_text(o.stopped) + "\n";
   text += "balls           " + std::to_string(o.balls_at_start) + " -> " +
           std::to_string(o.balls_at_end) + "\n";
   text += "collisions      " + std::to_string(o.collisions) + " (ball-ball " +
           std::to_string(o.ball_ball) + ", ball-wall " + std::to_string(o.ball_wall) + ", potted " +
           std::to_string(o.potted) + ")\n";
-  text += "collisions/s    " + readable(o.collisions_per_second()) + "\n";
-  text += "wall time       " + readable(o.wall_seconds) + " s (setup " + readable(o.setup_seconds) +
+  text += "collisions/s    " + readable_count(o.collisions_per_second()) + "\n";
+  text += "wall time       " + rounded(o.wall_seconds) + " s (setup " + rounded(o.setup_seconds) +
           " s)\n";
   text += "energy          " + readable(o.energy_before) + " -> " + readable(o.energy_after) +
-          " (drift " + readable(o.energy_drift()) + ")\n";
+          " (" + change + " " + rounded(o.energy_change()) + ")\n";
   text += "momentum        " + readable(o.momentum_before) + " -> " + readable(o.momentum_after) +
-          " (drift " + readable(o.momentum_drift()) + ")\n";
+          " (" + change + " " + rounded(o.momentum_change()) + ")\n";
   if (o.frames > 0) text += "frames          " + std::to_string(o.frames) + "\n";
   return text;
 }
@@ -46,6 +85,9 @@ nlohmann::ordered_json run_json(const RunOutcome& o) {
   json["start_time"] = o.start_time;
   json["end_time"] = o.end_time;
   json["interrupted"] = o.interrupted;
+  json["stopped"] = o.stopped == StopReason::none
+                        ? nlohmann::ordered_json()
+                        : nlohmann::ordered_json(stop_reason_name(o.stopped));
   json["balls_at_start"] = o.balls_at_start;
   json["balls_at_end"] = o.balls_at_end;
   json["collisions"] = o.collisions;
@@ -57,10 +99,11 @@ nlohmann::ordered_json run_json(const RunOutcome& o) {
   json["setup_seconds"] = o.setup_seconds;
   json["energy_before"] = o.energy_before;
   json["energy_after"] = o.energy_after;
-  json["energy_drift"] = o.energy_drift();
+  json["conservative"] = o.conservative;
+  json["energy_change"] = o.energy_change();
   json["momentum_before"] = {o.momentum_before.x, o.momentum_before.y};
   json["momentum_after"] = {o.momentum_after.x, o.momentum_after.y};
-  json["momentum_drift"] = o.momentum_drift();
+  json["momentum_change"] = o.momentum_change();
   json["frames"] = o.frames;
   return json;
 }

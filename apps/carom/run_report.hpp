@@ -6,6 +6,7 @@
 #include <string>
 
 #include "carom/vec2.hpp"
+#include "carom/world.hpp"
 
 namespace carom::cli {
 
@@ -28,14 +29,22 @@ struct RunOutcome {
   Vec2 momentum_after;
   double movable_mass = 0.0;  // at the start
   bool interrupted = false;
+  // Why the run stopped short of what was asked (none: it did not).
+  StopReason stopped = StopReason::none;
+  // Whether the scene conserves energy and momentum (every restitution 1, no pockets, no moving
+  // immovable ball): their changes are then numerical drift, otherwise physics.
+  bool conservative = true;
 
   // (E_after - E_before) / E_before; 0 when E_before is 0.
-  [[nodiscard]] double energy_drift() const;
+  [[nodiscard]] double energy_change() const;
   // |P_after - P_before| / sqrt(2·M·E_before): the change of momentum relative to the momentum
   // scale of the gas; 0 when E_before is 0.
-  [[nodiscard]] double momentum_drift() const;
+  [[nodiscard]] double momentum_change() const;
   [[nodiscard]] double collisions_per_second() const;
 };
+
+// "no_more_contacts", "time_limit", "interrupted", "stop_condition"; "" for none.
+[[nodiscard]] std::string stop_reason_name(StopReason reason);
 
 [[nodiscard]] std::string run_text(const RunOutcome& outcome);
 [[nodiscard]] nlohmann::ordered_json run_json(const RunOutcome& outcome);

@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
-#include "atomic_file.hpp"
 #include "carom/error.hpp"
 #include "exit_codes.hpp"
+#include "output_file.hpp"
 #include "scalar_args.hpp"
 #include "sweep_case.hpp"
 #include "sweep_report.hpp"
@@ -26,7 +26,7 @@ struct SweepOptions {
   std::string a;
   std::string va;
   std::string b;
-  std::string vb;
+  std::string vb = "0,0";  // a standing ball unless said otherwise
   std::string ma = "1";
   std::string mb = "1";
   std::string e = "1";
@@ -99,7 +99,7 @@ int run(const SweepOptions& options) {
   const bool draw = options.svg_option->count() > 0;
   if (draw) {
     if (options.svg.empty()) throw UsageError("--svg", options.svg, "the file name is empty");
-    if (auto error = write_file_atomically(options.svg, sweep_svg(sweep_case, outcome))) {
+    if (auto error = write_output(options.svg, sweep_svg(sweep_case, outcome))) {
       throw UsageError("--svg", options.svg, *error);
     }
   }
@@ -136,9 +136,9 @@ Command add_sweep_command(CLI::App& app) {
   sweep->add_option("--b", options->b, "Ball B at the start: centre X,Y and radius R > 0")
       ->type_name("X,Y,R")
       ->required();
-  sweep->add_option("--vb", options->vb, "B's movement during the step")
+  sweep->add_option("--vb", options->vb, "B's movement during the step (0,0: standing)")
       ->type_name("DX,DY")
-      ->required();
+      ->capture_default_str();
   sweep->add_option("--ma", options->ma, "A's mass: a number > 0, or inf or immovable")
       ->type_name("M")
       ->capture_default_str();

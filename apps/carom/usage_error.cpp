@@ -5,7 +5,9 @@
 namespace carom::cli {
 
 UsageError::UsageError(std::string option, std::string value, std::string problem)
-    : std::runtime_error(option + " \"" + value + "\": " + problem),
+    // An option without a value to quote (one that is missing, or a flag) is named alone.
+    : std::runtime_error(value.empty() ? option + ": " + problem
+                                       : option + " \"" + value + "\": " + problem),
       option_(std::move(option)),
       value_(std::move(value)),
       problem_(std::move(problem)) {}

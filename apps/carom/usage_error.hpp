@@ -7,7 +7,8 @@
 namespace carom::cli {
 
 // Thrown when an option's value is malformed or out of range. what() reads
-// `OPTION "VALUE": PROBLEM`, so the user sees which option, what they typed and why it is wrong.
+// `OPTION "VALUE": PROBLEM`, so the user sees which option, what they typed and why it is wrong
+// (`OPTION: PROBLEM` when there is no value to quote).
 class UsageError : public std::runtime_error {
  public:
   UsageError(std::string option, std::string value, std::string problem);

@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(
                   {"--until \"0\"", "> 0"}},
         BadRender{"UnwritablePath",
                   {"--out", "/nonexistent-dir/x.png"},
-                  {"--out \"/nonexistent-dir/x.png\"", "cannot create"}},
+                  {"--out \"/nonexistent-dir/x.png\"", "does not exist"}},
         BadRender{
             "UnknownPictureFormat", {"--out", "OUT.jpg"}, {"--out", "out.jpg", ".svg or .png"}},
         BadRender{"UnknownAnimationFormat",
@@ -107,7 +107,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRender{"ViewTooLarge",
                   {"--view", "-1e308,0,1e308,1", "--out", "OUT.png"},
                   {"--view \"-1e308,0,1e308,1\"", "too large"}},
-        BadRender{"ViewEmpty", {"--view", "", "--out", "OUT.png"}, {"--view \"\"", "empty"}},
+        BadRender{"ViewEmpty", {"--view", "", "--out", "OUT.png"}, {"--view: ", "empty"}},
         BadRender{"BadSceneColour",
                   {"--out", "OUT.svg"},
                   {"scene.json", "balls[0].color", "blurple", "not a colour"},

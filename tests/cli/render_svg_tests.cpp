@@ -107,7 +107,7 @@ std::vector<double> clip_rect(const std::string& svg) {
 }
 
 // Every point of a polyline's points="x,y x,y ..." in the document, in order.
-std::vector<Vec2> polyline_points(const std::string& svg) {
+std::vector<Vec2> polyline_vertices(const std::string& svg) {
   std::vector<Vec2> points;
   const std::string attribute = "<polyline points=\"";
   for (std::size_t at = svg.find(attribute); at != std::string::npos;
@@ -137,7 +137,7 @@ TEST(RenderSvg, AnOpenWorldsTrailsFitTheView) {
   const std::string svg = read_file(dir / "two.svg");
   const std::vector<double> clip = clip_rect(svg);
   ASSERT_EQ(clip.size(), 4U);
-  const std::vector<Vec2> points = polyline_points(svg);
+  const std::vector<Vec2> points = polyline_vertices(svg);
   ASSERT_GE(points.size(), 4U);  // two trails, each bent at the contact
   for (const Vec2 p : points) {
     EXPECT_GE(p.x, clip[0]);

@@ -7,14 +7,15 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 namespace carom::cli::test {
-namespace {
 
-// A file the child writes one stream into, removed when the run is over.
+// A file the child writes one stream into (or reads its input from). Outside the anonymous
+// namespace: RunningTool::Streams holds two.
 class CaptureFile {
  public:
   explicit CaptureFile(const ScratchDir& dir, const std::string& name)
@@ -33,9 +34,12 @@ class CaptureFile {
   int fd_;
 };
 
-// Starts the tool (CAROM_CLI_PATH) with args, its stdout and stderr sent to the given
-// descriptors, or to /dev/null for -1; the child's pid, or -1 if it cannot be started.
-pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd) {
+namespace {
+
+// Starts the tool (CAROM_CLI_PATH) with args, its stdin read from in_fd and its stdout and stderr
+// sent to the given descriptors, each /dev/null for -1; the child's pid, or -1 if it cannot be
+// started.
+pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd, int in_fd = -1) {
   std::vector<std::string> words{CAROM_CLI_PATH};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -54,6 +58,11 @@ pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd) 
   };
   send(out_fd, STDOUT_FILENO);
   send(err_fd, STDERR_FILENO);
+  if (in_fd >= 0) {
+    posix_spawn_file_actions_adddup2(&actions, in_fd, STDIN_FILENO);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  }
   pid_t child = 0;
   // environ (from unistd.h) passes the test's own environment on.
   const int spawned = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
@@ -73,11 +82,18 @@ int wait_for_exit(pid_t child) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-ToolRun run_carom(const std::vector<std::string>& args) {
+ToolRun run_carom(const std::vector<std::string>& args) { return run_carom(args, std::nullopt); }
+
+ToolRun run_carom(const std::vector<std::string>& args, const std::optional<std::string>& input) {
   const ScratchDir streams;
   const CaptureFile out(streams, "stdout");
   const CaptureFile err(streams, "stderr");
-  const pid_t child = spawn_carom(args, out.fd(), err.fd());
+  std::optional<CaptureFile> in;
+  if (input) {
+    in.emplace(streams, "stdin");
+    std::ofstream(streams / "stdin", std::ios::binary) << *input;
+  }
+  const pid_t child = spawn_carom(args, out.fd(), err.fd(), in ? in->fd() : -1);
   if (child < 0) throw std::runtime_error(std::string("cannot run ") + CAROM_CLI_PATH);
 
   int status = 0;
@@ -90,6 +106,39 @@ ToolRun run_carom(const std::vector<std::string>& args) {
   run.err = err.content();
   return run;
 }
+
+struct RunningTool::Streams {
+  Streams() : out(dir, "stdout"), err(dir, "stderr") {}
+  ScratchDir dir;
+  CaptureFile out;
+  CaptureFile err;
+};
+
+RunningTool::RunningTool(const std::vector<std::string>& args)
+    : streams_(std::make_unique<Streams>()),
+      pid_(spawn_carom(args, streams_->out.fd(), streams_->err.fd())) {
+  if (pid_ < 0) throw std::runtime_error(std::string("cannot run ") + CAROM_CLI_PATH);
+}
+
+RunningTool::~RunningTool() {
+  if (pid_ > 0) {
+    ::kill(pid_, SIGKILL);
+    static_cast<void>(wait_for_exit(pid_));
+  }
+}
+
+bool RunningTool::signal(int signal) const { return pid_ > 0 && ::kill(pid_, signal) == 0; }
+
+ToolRun RunningTool::wait() {
+  ToolRun run;
+  if (pid_ > 0) run.exit_code = wait_for_exit(pid_);
+  pid_ = -1;
+  run.out = streams_->out.content();
+  run.err = streams_->err.content();
+  return run;
+}
+
+std::string RunningTool::err() const { return streams_->err.content(); }
 
 ScratchDir::ScratchDir() {
   // The test's name and the process id keep folders apart when ctest runs tests in parallel.
@@ -109,6 +158,13 @@ ScratchDir::ScratchDir() {
 ScratchDir::~ScratchDir() {
   std::error_code ignored;
   std::filesystem::remove_all(path_, ignored);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
 std::string read_file(const std::filesystem::path& path) {

@@ -5,6 +5,8 @@
 #include <sys/types.h>  // pid_t
 
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,13 +19,39 @@ struct ToolRun {
 };
 
 // Runs the tool (CAROM_CLI_PATH) with args and waits for it. Its output goes through files, so
-// neither stream can block the other however much is written.
+// neither stream can block the other however much is written. Its standard input is `input`
+// (or /dev/null).
 [[nodiscard]] ToolRun run_carom(const std::vector<std::string>& args);
+[[nodiscard]] ToolRun run_carom(const std::vector<std::string>& args,
+                                const std::optional<std::string>& input);
 
 // Starts the tool with args without waiting for it, its output discarded; -1 if it cannot start.
 [[nodiscard]] pid_t start_carom(const std::vector<std::string>& args);
 // Waits for a tool started so: its exit status, or -1 if it did not exit normally.
 [[nodiscard]] int wait_for_exit(pid_t child);
+
+// The tool started in the background with its output kept, for tests that signal it. Killed
+// (SIGKILL) when destroyed if it is still running.
+class RunningTool {
+ public:
+  explicit RunningTool(const std::vector<std::string>& args);
+  ~RunningTool();
+  RunningTool(const RunningTool&) = delete;
+  RunningTool& operator=(const RunningTool&) = delete;
+
+  [[nodiscard]] pid_t pid() const { return pid_; }
+  // Sends a signal; false if it could not be sent.
+  bool signal(int signal) const;
+  // Waits for the exit: its status (-1 if killed by a signal) and everything it printed.
+  [[nodiscard]] ToolRun wait();
+  // What it has printed on stderr so far.
+  [[nodiscard]] std::string err() const;
+
+ private:
+  struct Streams;
+  std::unique_ptr<Streams> streams_;
+  pid_t pid_ = -1;
+};
 
 // A fresh, empty folder for one test, removed with everything in it when the test ends.
 class ScratchDir {
@@ -41,6 +69,9 @@ class ScratchDir {
  private:
   std::filesystem::path path_;
 };
+
+// The lines of a text, without their line ends.
+[[nodiscard]] std::vector<std::string> lines_of(const std::string& text);
 
 // The whole content of a file ("" if it cannot be read).
 [[nodiscard]] std::string read_file(const std::filesystem::path& path);

@@ -126,7 +126,7 @@ TEST(SceneBadOutput, UnwritableOutputIsRefusedBeforeAnyWork) {
     const std::string path = (dir / "no-such-folder" / "out.csv").string();
     const ToolRun run =
         run_carom({"run", example("periodic-gas.json"), "--until", "100", option, path});
-    expect_one_clear_error(run, {option, "cannot be written", "No such file or directory"});
+    expect_one_clear_error(run, {option, "cannot be written", "does not exist"});
     EXPECT_FALSE(std::filesystem::exists(dir / "no-such-folder"));
   }
 }

@@ -8,9 +8,11 @@
 #include <optional>
 #include <string>
 
+#include "cairo_picture.hpp"
 #include "ffmpeg_pipe.hpp"
 #include "render_scenes.hpp"
 #include "run_tool.hpp"
+#include "view_box.hpp"
 
 namespace carom::cli::test {
 namespace {
@@ -69,6 +71,28 @@ TEST(RenderAnimation, SameRunGivesTheSameBytes) {
               0);
   }
   EXPECT_EQ(read_file(dir / "a.gif"), read_file(dir / "b.gif"));
+}
+
+// --view frames every frame: the GIF's height is the layout's for that box, not the run's.
+TEST(RenderAnimation, ViewSetsTheFramesBox) {
+  if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
+  int heights[2] = {0, 0};
+  for (const char* view : {"0,0,8,2", "0,0,4,4"}) {
+    const ToolRun run =
+        run_render({"render", scene, "--animate", (dir / "v.gif").string(), "--until", "0.2",
+                    "--fps", "10", "--width", "320", "--view", view});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::string gif = read_file(dir / "v.gif");
+    ASSERT_GE(gif.size(), 13U);
+    EXPECT_EQ(le16(gif, 6), 320U);
+    heights[view[4] == '8' ? 0 : 1] = static_cast<int>(le16(gif, 8));
+  }
+  // Balls without colours are drawn by speed, with the legend band below the view.
+  EXPECT_EQ(heights[0], layout_image(ViewBox{{0, 0}, {8, 2}}, 320, true, true).height);
+  EXPECT_EQ(heights[1], layout_image(ViewBox{{0, 0}, {4, 4}}, 320, true, true).height);
+  EXPECT_GT(heights[1], heights[0]);  // a square box is taller than a wide one
 }
 
 // PATH pointing at another folder (an empty one, or one with a stand-in) for one run.

@@ -32,7 +32,9 @@ int run(const GasCommandOptions& options) {
   }
   if (!outcome.measured()) {
     std::cerr << "carom gas: " << StopOnSignals::what()
-              << " while equilibrating: nothing was measured\n";
+              << (outcome.interrupted_equilibrating ? " while equilibrating"
+                                                    : " before the first block ended")
+              << ": nothing was measured\n";
     return StopOnSignals::exit_code();
   }
   if (!options.out.empty()) {

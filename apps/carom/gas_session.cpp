@@ -22,6 +22,7 @@ GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
   outcome.equilibration_rate = science::equilibrate(world, spec.equilibration_collisions);
   if (world.stop_reason() == StopReason::interrupted) {
     outcome.interrupted = true;
+    outcome.interrupted_equilibrating = true;
     return outcome;
   }
   const science::GasMonitorSettings settings =

@@ -45,8 +45,10 @@ struct GasOutcome {
   double equilibration_rate = 0.0;             // ω seen while equilibrating
   double wall_seconds = 0.0;                   // of the production run, measurements included
   // Stopped by a signal: during equilibration (nothing measured), or during the measurement
-  // (results.interrupted: estimates over the blocks completed).
+  // (results.interrupted: estimates over the blocks completed, maybe none).
   bool interrupted = false;
+  bool interrupted_equilibrating = false;
+  // Whether there are estimates to report: a block at least was completed.
   [[nodiscard]] bool measured() const { return !interrupted || results.blocks_done > 0; }
 };
 

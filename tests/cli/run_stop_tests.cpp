@@ -22,18 +22,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Two balls in a periodic cell moving relative to each other along a line of slope 1 that keeps
-// 5/√2 from every image of the other, more than the two radii: they never meet, and no rule can
-// prove it, so a run to a contact never ends by itself.
-constexpr const char* kEndlessOrbit = R"({
-  "carom_scene": 1,
-  "world": {"boundary": "periodic", "lower": [0, 0], "upper": [10, 10]},
-  "balls": [
-    {"position": [1, 1], "velocity": [0.5, 0.5], "radius": 1},
-    {"position": [6, 1], "velocity": [-0.5, -0.5], "radius": 1}
-  ]
-})";
-
 // How long a stopped run may take to exit after the signal: the tool promises a fifth of a second
 // (a few thousand events); this allows for a sanitizer build on a loaded machine, and still fails
 // a run that waits for a chunk that never ends.
@@ -88,7 +76,7 @@ TEST_P(RunStopsOnSignal, InEveryModeEvenWithoutContacts) {
   for (const Mode& mode : modes) {
     SCOPED_TRACE(mode.name);
     const ScratchDir dir;
-    const std::string scene = write_scene(dir, "orbit.json", kEndlessOrbit);
+    const std::string scene = write_scene(dir, "orbit.json", kEndlessOrbitScene);
     const std::string frames = (dir / "frames.csv").string();
     const std::string checkpoint = (dir / "orbit.ckpt").string();
     std::vector<std::string> args{"run",          scene,      "--frames", frames,
@@ -175,7 +163,7 @@ TEST(RunStop, ASecondSignalEndsAtOnceAndRemovesTemporaryFiles) {
 
 TEST(RunStop, CollisionsStopAtTheTimeLimitAndSaySo) {
   const ScratchDir dir;
-  const std::string scene = write_scene(dir, "orbit.json", kEndlessOrbit);
+  const std::string scene = write_scene(dir, "orbit.json", kEndlessOrbitScene);
   const ToolRun run =
       run_carom({"run", scene, "--collisions", "1", "--time-limit", "5000", "--stats", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -42,8 +42,9 @@ TEST(SceneExamples, EachLoadsRunsAndPassesTheAudit) {
     const bool audit = built.balls.size() <= kAuditLimit;
     const double energy_before = built.world.kinetic_energy();
     if (scene.world.boundary == Boundary::open) {
-      // World::run_collisions does not return in an open world once no contact is left (balls
-      // flying apart cross grid cells forever), so open scenes run for a time instead.
+      // Open scenes have few contacts (the two balls meet once, then fly apart): they run for a
+      // time, where a count of contacts would end by the proof that no more will come, which is
+      // World::run_collisions's own business (WorldStop.*, the "When nothing will happen" tests).
       static_cast<void>(step_scene(built, 1.0));
     } else {
       // A few contacts per ball at most, so the 10⁵-disk gas stays quick.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "readable_number.hpp"
+#include "stop_signals.hpp"
 #include "svg_plot.hpp"
 
 namespace carom::cli {
@@ -26,6 +27,8 @@ struct Run {
 
 Run run_scene(const Scene& scene, double until) {
   SceneWorld scene_world = make_world(scene);
+  // A signal stops the run: the plot then ends at the time reached.
+  stop_world_on_signals(scene_world.world);
   Run run;
   run.start_time = scene_world.start_time;
   const auto sample = [&] {
@@ -37,6 +40,7 @@ Run run_scene(const Scene& scene, double until) {
     const double target = until * (static_cast<double>(i) / kPlotSamples);
     step_scene(scene_world, target - scene_world.world.time(), &run.contacts, &run.potted);
     sample();
+    if (scene_world.world.stop_reason() == StopReason::interrupted) break;
   }
   return run;
 }

@@ -27,7 +27,7 @@ TEST(RunCommand, TwoBallsUntilWithStatsAsJson) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.err, "");
   const auto stats = nlohmann::json::parse(run.out);
-  EXPECT_EQ(stats["collisions"], 1);  // they touch once, at t = 0.5, and fly apart
+  EXPECT_EQ(stats["collisions"], 1);  // they touch once, at t = 0.58347, and fly apart
   EXPECT_EQ(stats["end_time"], 2.0);
   EXPECT_EQ(stats["interrupted"], false);
   // One elastic bounce: energy and momentum are kept to a few roundings.

@@ -57,26 +57,27 @@ std::string bench_text(const BenchOutcome& o) {
   out += fmt::format("  start: triangular lattice of {} x {} sites, velocities from seed {}\n",
                      o.lattice_columns, o.lattice_rows, o.seed);
   out += fmt::format("  setup {} s, equilibration {} collisions in {} s (neither timed)\n",
-                     readable(o.setup_seconds), o.equilibration_collisions,
-                     readable(o.equilibration_seconds));
-  out += fmt::format("  timed: {} collisions in {} s = {} collisions/s ({} ns per collision)\n",
-                     o.collisions, readable(o.wall_seconds), readable(o.collisions_per_second()),
-                     readable(o.nanoseconds_per_collision()));
+                     rounded(o.setup_seconds), o.equilibration_collisions,
+                     rounded(o.equilibration_seconds));
+  out +=
+      fmt::format("  timed: {} collisions in {} s = {} collisions/s ({} ns per collision)\n",
+                  o.collisions, rounded(o.wall_seconds), readable_count(o.collisions_per_second()),
+                  rounded(o.nanoseconds_per_collision()));
   if (o.repetitions.size() > 1) {
     std::string each;
     for (const double ns : o.repetition_nanoseconds_per_collision()) {
-      each += (each.empty() ? "" : ", ") + readable(ns);
+      each += (each.empty() ? "" : ", ") + rounded(ns);
     }
     out += fmt::format("  {} timed runs, ns per collision: {} (median {}, least {})\n",
-                       o.repetitions.size(), each, readable(o.median_nanoseconds_per_collision()),
-                       readable(o.best_nanoseconds_per_collision()));
+                       o.repetitions.size(), each, rounded(o.median_nanoseconds_per_collision()),
+                       rounded(o.best_nanoseconds_per_collision()));
   }
   out +=
       fmt::format("  memory: {} bytes per ball (peak resident set growth, contact recording off)\n",
-                  readable(o.bytes_per_ball()));
+                  rounded(o.bytes_per_ball()));
   out += fmt::format("  drift over the timed run{}: energy {}, momentum {} (relative)\n",
-                     o.repetitions.size() > 1 ? "s" : "", readable(o.energy_drift),
-                     readable(o.momentum_drift));
+                     o.repetitions.size() > 1 ? "s" : "", rounded(o.energy_drift),
+                     rounded(o.momentum_drift));
   out += build_and_machine_text(o.build_type, o.compiler, o.machine);
   return out;
 }

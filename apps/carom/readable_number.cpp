@@ -14,7 +14,15 @@ std::string readable(double value) {
 
 std::string readable(Vec2 v) { return "(" + readable(v.x) + ", " + readable(v.y) + ")"; }
 
-std::string rounded(double value) { return fmt::format("{:.3g}", value + 0.0); }
+std::string rounded(double value) {
+  // Whole numbers up to 10¹⁵ in digits (1120, not 1.12e+03), rounded to 3 significant digits.
+  const double magnitude = std::abs(value);
+  if (magnitude >= 999.5 && magnitude < 1e15) {
+    const double unit = std::pow(10.0, std::floor(std::log10(magnitude)) - 2.0);
+    return fmt::format("{:.0f}", std::round(value / unit) * unit);
+  }
+  return fmt::format("{:.3g}", value + 0.0);
+}
 
 std::string readable_count(double value) {
   constexpr struct {

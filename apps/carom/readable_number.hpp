@@ -13,7 +13,7 @@ namespace carom::cli {
 // "(x, y)", each as above.
 [[nodiscard]] std::string readable(Vec2 v);
 // Derived figures (rates, durations, times in messages) to 3 significant digits: "0.00674",
-// "1.19", "1.06e-09"; -0 reads as 0.
+// "1.19", "1120", "1.06e-09"; -0 reads as 0.
 [[nodiscard]] std::string rounded(double value);
 // A large count or rate in words, 3 significant digits: "723", "7.24 thousand", "1.06 million",
 // "2.5 billion".

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -78,7 +79,7 @@ TEST(RenderAnimation, ViewSetsTheFramesBox) {
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);
-  int heights[2] = {0, 0};
+  std::array<int, 2> heights{0, 0};
   for (const char* view : {"0,0,8,2", "0,0,4,4"}) {
     const ToolRun run =
         run_render({"render", scene, "--animate", (dir / "v.gif").string(), "--until", "0.2",

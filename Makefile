@@ -119,16 +119,18 @@ test-asan:
 # clang++ -Werror over all the code (library, tool, tests, benchmarks, peers), the suite run under
 # AddressSanitizer + UndefinedBehaviorSanitizer: test-clang and test-asan in one build.
 .PHONY: test-clang-asan
-# Sanitizers keep clang from vectorising, so the library and its core tests are also built
-# optimised (preset clang): there -Wpass-failed checks that the batch kernel's vectorisation
-# pragma holds, and the core tests check the vectorised batch against the scalar query bit for bit.
+# Sanitizers keep clang from vectorising, so the libraries and the kernels' tests are also built
+# optimised (preset clang): there -Wpass-failed checks that the batch kernels' vectorisation
+# pragmas hold, and the tests check the vectorised batch (core) and the pair kernel (world)
+# against the scalar query bit for bit.
 test-clang-asan:
 	cmake --preset clang-asan
 	cmake --build --preset clang-asan
 	ctest --preset clang-asan
 	cmake --preset clang >/dev/null
-	cmake --build --preset clang --target carom_core_tests
+	cmake --build --preset clang --target carom_core_tests carom_world_tests
 	build/clang/tests/carom_core_tests --gtest_brief=1
+	build/clang/tests/carom_world_tests --gtest_brief=1 --gtest_filter='PairBatch*'
 
 # ThreadSanitizer on the threads test: independent worlds stepped on several threads at once.
 .PHONY: test-tsan

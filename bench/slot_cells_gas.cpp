@@ -36,7 +36,7 @@
 #include <limits>
 #include <vector>
 
-#include "event_queue.hpp"
+#include "world/event_queue.hpp"
 #include "gas_run_support.hpp"
 #include "hard_disk_setup.hpp"
 

@@ -34,3 +34,10 @@ function(carom_apply_tool_flags target)
   carom_apply_build_flags(${target})
   target_compile_options(${target} PRIVATE ${CAROM_TOOL_OPTIONS})
 endfunction()
+
+# Compiles a library as one unity file when CAROM_UNITY_CORE is on (the test presets); see the
+# option in the top-level CMakeLists.txt.
+function(carom_unity_library target)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ${CAROM_UNITY_CORE}
+                                             UNITY_BUILD_BATCH_SIZE 0)
+endfunction()

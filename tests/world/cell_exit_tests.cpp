@@ -9,7 +9,7 @@
 #include <limits>
 #include <random>
 
-#include "cell_exit.hpp"
+#include "world/cell_exit.hpp"
 
 namespace carom {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "permute.hpp"
+#include "world/permute.hpp"
 
 namespace carom::detail {
 namespace {

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "event_queue.hpp"
+#include "world/event_queue.hpp"
 
 namespace carom::detail {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "species.hpp"
+#include "world/species.hpp"
 
 namespace carom::detail {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "contact_pace.hpp"
+#include "world/contact_pace.hpp"
 
 namespace carom::detail {
 namespace {

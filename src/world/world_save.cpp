@@ -15,7 +15,7 @@
 #include "atomic_write.hpp"
 #include "carom/error.hpp"
 #include "save_format.hpp"
-#include "validate.hpp"
+#include "core/validate.hpp"
 #include "world_impl.hpp"
 
 namespace carom {

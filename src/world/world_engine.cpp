@@ -7,14 +7,14 @@
 #include <string>
 #include <type_traits>
 
-#include "bowl_bounce.hpp"
+#include "core/bowl_bounce.hpp"
 #include "carom/error.hpp"
 #include "cell_exit.hpp"
-#include "circle_crossing.hpp"
+#include "core/circle_crossing.hpp"
 #include "contact_pace.hpp"
 #include "pair_batch.hpp"
 #include "permute.hpp"
-#include "validate.hpp"
+#include "core/validate.hpp"
 #include "world_impl.hpp"
 
 // GCC and clang both spell it this way; on a lambda it goes after the parameter list.

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "fixed_divisor.hpp"
+#include "world/fixed_divisor.hpp"
 
 namespace carom::detail {
 namespace {

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "validate.hpp"
+#include "core/validate.hpp"
 #include "world_impl.hpp"
 
 namespace carom {

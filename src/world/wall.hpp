@@ -2,7 +2,7 @@
 // engine asks of it.
 #pragma once
 
-#include "arc_frame.hpp"
+#include "core/arc_frame.hpp"
 #include "carom/shapes.hpp"
 #include "carom/sweep.hpp"
 

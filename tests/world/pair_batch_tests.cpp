@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "circle_crossing.hpp"
-#include "pair_batch.hpp"
+#include "core/circle_crossing.hpp"
+#include "world/pair_batch.hpp"
 
 namespace carom {
 namespace {

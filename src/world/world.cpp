@@ -8,7 +8,7 @@
 
 #include "carom/error.hpp"
 #include "carom/sweep.hpp"
-#include "validate.hpp"
+#include "core/validate.hpp"
 #include "world_impl.hpp"
 
 namespace carom {

@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-#include "exact_range.hpp"
+#include "core/exact_range.hpp"
 
 #if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
 #include <immintrin.h>

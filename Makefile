@@ -250,8 +250,7 @@ format:
 LINT_CHECKS ?= -clang-analyzer-*,-bugprone-reserved-identifier
 LINT_CLI11_CHECKS ?= -performance-unnecessary-value-param
 # Its compile commands come from the lint preset, configured only (no build): there every file is
-# compiled on its own (the dev build compiles the tool's verbs as one unity file) and once (the
-# dev build compiles hard_disk_setup.cpp into five targets, and clang-tidy checked it five times).
+# compiled on its own (the dev build compiles the tool's verbs as one unity file) and once.
 lint: deps
 	cmake --preset lint >/dev/null
 	# clang-tidy counts the warnings it suppressed in system headers on stderr; only findings matter.

@@ -1,5 +1,5 @@
-// carom benchmarks: what the hard-disk gas programs (carom_world_gas_probe, carom_textbook_gas,
-// carom_slot_cells_gas) share so that their figures compare: the CPU clock they are timed by, the
+// carom benchmarks: what the hard-disk gas programs (carom_world_gas_probe, carom_textbook_gas)
+// share so that their figures compare: the CPU clock they are timed by, the
 // random order in which SHUFFLED=1 numbers the disks (one permutation for all, by construction),
 // the start read out of carom's World, and the equal-mass bounce of the simulators beside it.
 #pragma once

@@ -3,16 +3,14 @@
 // time, the time that 100 collisions per disk take; one runs World::run_until alone, the other
 // measure_gas with the settings `carom gas` uses for that run (gas_monitor_settings: 16 blocks of
 // 6 runs, a structure sample every 10 collisions per disk). items_per_second is collisions per
-// (CPU) second in both; the ratio is the measurements' overhead. The figures: docs/performance.md,
-// "Hard-disk science (issue 5)".
+// (CPU) second in both; the ratio is the measurements' overhead. The figures: docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
 
 #include "carom/science/gas_monitor.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 #include "carom/world.hpp"
-#include "gas_session.hpp"
-#include "hard_disk_setup.hpp"
 
 namespace carom::bench {
 namespace {
@@ -30,12 +28,14 @@ struct Gas {
 };
 
 Gas make_gas(std::uint64_t n, double eta) {
-  const cli::HardDiskLayout layout = cli::hard_disk_layout(n, eta);
-  Gas gas{
-      cli::make_hard_disk_world(layout, kSeed), {{0.0, 0.0}, {layout.side, layout.side}}, 0.0, {}};
+  const science::HardDiskLayout layout = science::hard_disk_layout(n, eta);
+  Gas gas{science::make_hard_disk_world(layout, kSeed),
+          {{0.0, 0.0}, {layout.side, layout.side}},
+          0.0,
+          {}};
   const double rate = science::equilibrate(gas.world, kEquilibrationPerDisk * n);
   gas.iteration_time = 2.0 * kCollisionsPerDiskPerIteration / rate;
-  gas.settings = cli::gas_monitor_settings(kBlocks, kCollisionsPerDiskPerIteration, rate);
+  gas.settings = science::gas_monitor_settings(kBlocks, kCollisionsPerDiskPerIteration, rate);
   return gas;
 }
 

@@ -21,7 +21,7 @@
 //   a cell crossing moves the ball to the next cell (wrapping through the box's edge) and
 //   re-predicts it.
 // It uses nothing of carom but the scene: the start (positions and velocities) is read out of the
-// World that apps/carom/hard_disk_setup.hpp builds, so both programs start from the same state.
+// World that carom/science/hard_disk_gas.hpp builds, so both programs start from the same state.
 // --check (run by ctest) compares its first collisions with carom's World on small gases and
 // checks that it keeps the disks apart, in their cells, and conserves energy (see check()).
 #include <algorithm>
@@ -35,8 +35,8 @@
 #include <utility>
 #include <vector>
 
+#include "carom/science/hard_disk_gas.hpp"
 #include "gas_run_support.hpp"
-#include "hard_disk_setup.hpp"
 
 #ifdef __GLIBC__     // defined by the standard headers above
 #include <malloc.h>  // malloc_trim
@@ -460,8 +460,8 @@ int check() {
   bool ok = true;
   for (const std::uint64_t n : {std::uint64_t{200}, std::uint64_t{500}}) {
     for (const double eta : {0.3, 0.6}) {
-      const carom::cli::HardDiskLayout layout = carom::cli::hard_disk_layout(n, eta);
-      carom::World world = carom::cli::make_hard_disk_world(layout, 1);
+      const carom::science::HardDiskLayout layout = carom::science::hard_disk_layout(n, eta);
+      carom::World world = carom::science::make_hard_disk_world(layout, 1);
       const Start start = start_of(world, layout.side);
       std::vector<std::uint32_t> lattice_index;  // BallId::index → position in balls()
       const std::vector<carom::BallId> ids = world.balls();
@@ -554,7 +554,7 @@ int main(int argc, char** argv) {
   const double per_ball = std::atof(argv[3]);
   const double equilibrate = argc > 4 ? std::atof(argv[4]) : 2.0;
   const bool shuffle = argc > 5 && std::atoi(argv[5]) != 0;
-  const carom::cli::HardDiskLayout layout = carom::cli::hard_disk_layout(n, eta);
+  const carom::science::HardDiskLayout layout = carom::science::hard_disk_layout(n, eta);
   if (n == 0 || !layout.box_wide_enough() || !layout.disks_fit()) {
     std::fprintf(stderr, "the triangular lattice cannot hold %llu disks at packing %g\n",
                  static_cast<unsigned long long>(n), eta);
@@ -565,7 +565,7 @@ int main(int argc, char** argv) {
   // simulator's memory alone, pages reused from the world included.
   Start start;
   {
-    const carom::World world = carom::cli::make_hard_disk_world(layout, 1);
+    const carom::World world = carom::science::make_hard_disk_world(layout, 1);
     start = start_of(world, layout.side);
   }
   if (shuffle) start = shuffled(start);

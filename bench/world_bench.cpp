@@ -1,6 +1,6 @@
 // carom benchmarks: the event-driven world (carom::World).
 // - BM_WorldHardDisks: collisions per second in a gas of equal hard disks in a periodic box, the
-//   scene of `carom bench` (apps/carom/hard_disk_setup.hpp), at N = 10⁴ and 10⁵ and packing
+//   scene of `carom bench` (carom/science/hard_disk_gas.hpp), at N = 10⁴ and 10⁵ and packing
 //   fractions 0.3 and 0.6. N = 10⁶ takes minutes (its setup alone is about 15 s), so it is
 //   registered only when the environment variable CAROM_BENCH_WORLD_LARGE is set (to anything).
 // - BM_WorldGameStep: a game's frame, 10⁴ balls of mixed sizes in a closed box stepped at 60
@@ -20,8 +20,8 @@
 #include <random>
 #include <vector>
 
+#include "carom/science/hard_disk_gas.hpp"
 #include "carom/world.hpp"
-#include "hard_disk_setup.hpp"
 
 namespace carom::bench {
 namespace {
@@ -48,10 +48,10 @@ World* gas(std::uint64_t n, std::int64_t eta_percent) {
     return cached.world.get();
   }
   cached.world.reset();  // free the old one before building the new
-  const cli::HardDiskLayout layout =
-      cli::hard_disk_layout(n, static_cast<double>(eta_percent) / 100.0);
+  const science::HardDiskLayout layout =
+      science::hard_disk_layout(n, static_cast<double>(eta_percent) / 100.0);
   if (!layout.box_wide_enough() || !layout.disks_fit()) return nullptr;
-  cached.world = std::make_unique<World>(cli::make_hard_disk_world(layout, kGasSeed));
+  cached.world = std::make_unique<World>(science::make_hard_disk_world(layout, kGasSeed));
   cached.world->run_collisions(kEquilibrationPerBall * n);
   cached.n = n;
   cached.eta_percent = eta_percent;

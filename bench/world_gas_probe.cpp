@@ -1,4 +1,4 @@
-// carom_world_gas_probe: the hard-disk gas of `carom bench` (apps/carom/hard_disk_setup.hpp),
+// carom_world_gas_probe: the hard-disk gas of `carom bench` (carom/science/hard_disk_gas.hpp),
 // timed by CPU time as well as wall time, with the tool's other figures (setup time, bytes per
 // ball). It needs the library alone, so it builds where the tool's dependencies (CLI11, fmt,
 // nlohmann-json) are missing, and its CPU-time rate stays meaningful on a loaded machine.
@@ -15,8 +15,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "carom/science/hard_disk_gas.hpp"
 #include "gas_run_support.hpp"
-#include "hard_disk_setup.hpp"
 
 namespace {
 
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   const bool record = argc <= 4 || std::atoi(argv[4]) != 0;
   const double equilibrate = argc > 5 ? std::atof(argv[5]) : 2.0;
   const bool shuffled = argc > 6 && std::atoi(argv[6]) != 0;
-  const carom::cli::HardDiskLayout layout = carom::cli::hard_disk_layout(n, eta);
+  const carom::science::HardDiskLayout layout = carom::science::hard_disk_layout(n, eta);
   if (n == 0 || !layout.box_wide_enough() || !layout.disks_fit()) {
     std::fprintf(stderr, "the triangular lattice cannot hold %llu disks at packing %g\n",
                  static_cast<unsigned long long>(n), eta);
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
   }
   const long resident_before = peak_resident_kib();
   const auto start = std::chrono::steady_clock::now();
-  carom::World world = carom::cli::make_hard_disk_world(layout, 1);
+  carom::World world = carom::science::make_hard_disk_world(layout, 1);
   if (shuffled) world = added_in_random_order(world, layout.side);
   world.set_contact_recording(record);
   const auto set_up = std::chrono::steady_clock::now();

@@ -1,5 +1,5 @@
 // carom_world_soak: the soak test of issue 8 (make soak; not in CI, minutes long). The hard-disk
-// gas of `carom bench` (apps/carom/hard_disk_setup.hpp: equal elastic disks in a periodic box)
+// gas of `carom bench` (carom/science/hard_disk_gas.hpp: equal elastic disks in a periodic box)
 // runs 10⁸ collisions in chunks of 10⁶; after every chunk it checks
 // - World::audit: no overlap beyond 10⁻⁹ of the sum of radii (its default), every ball in the
 //   grid cell it is filed in;
@@ -24,7 +24,7 @@
 #include <fstream>
 #include <string>
 
-#include "hard_disk_setup.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 
 namespace {
 
@@ -73,13 +73,13 @@ int main(int argc, char** argv) {
   const auto total = static_cast<std::uint64_t>(argc > 3 ? parse(argv[3], "COLLISIONS") : 1e8);
   const auto chunk = static_cast<std::uint64_t>(argc > 4 ? parse(argv[4], "CHUNK") : 1e6);
   const auto seed = static_cast<std::uint64_t>(argc > 5 ? parse(argv[5], "SEED") : 1);
-  const carom::cli::HardDiskLayout layout = carom::cli::hard_disk_layout(n, eta);
+  const carom::science::HardDiskLayout layout = carom::science::hard_disk_layout(n, eta);
   if (n == 0 || chunk == 0 || !layout.box_wide_enough() || !layout.disks_fit()) {
     std::fprintf(stderr, "carom_world_soak: the lattice cannot hold %llu disks at packing %g\n",
                  static_cast<unsigned long long>(n), eta);
     return 2;
   }
-  carom::World world = carom::cli::make_hard_disk_world(layout, seed);
+  carom::World world = carom::science::make_hard_disk_world(layout, seed);
   world.set_contact_recording(false);
   const double energy0 = world.kinetic_energy();
   const carom::Vec2 momentum0 = world.momentum();

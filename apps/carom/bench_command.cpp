@@ -15,9 +15,9 @@
 
 #include "bench_goals.hpp"
 #include "bench_report.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 #include "child_process.hpp"
 #include "exit_codes.hpp"
-#include "hard_disk_setup.hpp"
 #include "machine_info.hpp"
 #include "option_value.hpp"
 #include "readable_number.hpp"
@@ -56,7 +56,7 @@ struct BenchOptions {
 };
 
 struct BenchSettings {
-  HardDiskLayout layout;
+  science::HardDiskLayout layout;
   std::uint64_t seed = 0;
   std::uint64_t equilibration_collisions = 0;
   std::uint64_t collisions = 0;  // in each timed run
@@ -94,13 +94,13 @@ BenchSettings parse(const BenchOptions& options) {
   }
   const OptionValue eta_value{"--eta", options.eta, "a number in (0, 0.9069)"};
   const double eta = parse_finite_number(options.eta, eta_value);
-  if (!(eta > 0.0 && eta < kTriangularPackingLimit)) {
+  if (!(eta > 0.0 && eta < science::kTriangularPackingLimit)) {
     reject(eta_value,
            "the packing fraction must lie above 0 and below that of the densest packing of "
            "equal disks, pi/(2*sqrt(3)) = 0.9069");
   }
-  settings.layout = hard_disk_layout(n, eta);
-  const HardDiskLayout& layout = settings.layout;
+  settings.layout = science::hard_disk_layout(n, eta);
+  const science::HardDiskLayout& layout = settings.layout;
   if (!layout.box_wide_enough()) {
     throw UsageError("--n", options.n,
                      "at packing fraction " + readable(eta) + " the periodic box is only " +
@@ -157,7 +157,7 @@ BenchOutcome measure(const BenchSettings& settings) {
 
   const std::uint64_t peak_before = peak_resident_bytes();
   auto start = std::chrono::steady_clock::now();
-  World world = make_hard_disk_world(settings.layout, settings.seed);
+  World world = science::make_hard_disk_world(settings.layout, settings.seed);
   outcome.setup_seconds = seconds_since(start);
   // Nothing reads the contacts here, and recording them would grow the process by 80 bytes per
   // collision, so bytes_per_ball would measure the contact list rather than the world.
@@ -192,7 +192,7 @@ BenchOutcome measure(const BenchSettings& settings) {
   const Vec2 momentum_after = world.momentum();
 
   outcome.energy_drift = (energy_after - energy_before) / energy_before;
-  const double total_mass = static_cast<double>(outcome.n) * kDiskMass;
+  const double total_mass = static_cast<double>(outcome.n) * science::kDiskMass;
   outcome.momentum_drift =
       length(momentum_after - momentum_before) / std::sqrt(2.0 * total_mass * energy_before);
   return outcome;

@@ -1,5 +1,5 @@
 // carom tool: `carom bench`, the collision rate of the event-driven world on a gas of equal
-// hard disks in a periodic box (the scene of hard_disk_setup.hpp).
+// hard disks in a periodic box (the gas of carom/science/hard_disk_gas.hpp).
 #pragma once
 
 #include "command.hpp"

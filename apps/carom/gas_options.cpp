@@ -34,7 +34,7 @@ double parse_per_disk(const std::string& option, const std::string& text, bool z
 // The diameters of n disks: 1, and d for a fraction f of them spread evenly through the lattice
 // (disk i is of the second kind when ⌊(i+1)·f⌋ > ⌊i·f⌋).
 std::vector<double> diameters_of(std::uint64_t n, double second_diameter, double fraction) {
-  std::vector<double> diameters(n, kDiskDiameter);
+  std::vector<double> diameters(n, science::kDiskDiameter);
   for (std::uint64_t i = 0; i < n; ++i) {
     const auto index = static_cast<double>(i);
     if (std::floor((index + 1.0) * fraction) > std::floor(index * fraction)) {
@@ -58,13 +58,13 @@ GasSpec parse_gas_spec(const GasOptionText& text, double eta, const std::string&
   if (spec.n > kMaxDisks) {
     throw UsageError("--n", text.n, "at most " + std::to_string(kMaxDisks) + " disks");
   }
-  if (!(eta > 0.0 && eta < kTriangularPackingLimit)) {
+  if (!(eta > 0.0 && eta < science::kTriangularPackingLimit)) {
     throw UsageError("--eta", eta_text,
                      "the packing fraction must lie above 0 and below that of the densest "
                      "packing of equal disks, pi/(2*sqrt(3)) = 0.9069");
   }
   spec.eta = eta;
-  double second = kDiskDiameter;
+  double second = science::kDiskDiameter;
   double fraction = 0.0;
   if (!text.mix.empty()) {
     const OptionValue mix{"--mix", text.mix, "D:F, a diameter D > 0 and a fraction F in (0, 1)"};
@@ -81,16 +81,17 @@ GasSpec parse_gas_spec(const GasOptionText& text, double eta, const std::string&
   const double largest = *std::max_element(spec.diameters.begin(), spec.diameters.end());
   // The box for unit disks at this packing fraction is the box of eta for these diameters.
   const double unit_eta = eta * static_cast<double>(spec.n) / sum_squares;
-  spec.layout = hard_disk_layout(spec.n, unit_eta);
+  spec.layout = science::hard_disk_layout(spec.n, unit_eta);
   spec.layout.eta = eta;
-  if (!spec.layout.box_wide_enough() || spec.layout.side <= kMinPeriodicSideInDiameters * largest) {
+  if (!spec.layout.box_wide_enough() ||
+      spec.layout.side <= science::kMinPeriodicSideInDiameters * largest) {
     throw UsageError("--n", text.n,
                      "at packing fraction " + readable(eta) + " the periodic box is only " +
                          readable(spec.layout.side) +
                          " wide, and it must be more than 3 of the "
                          "largest diameters wide: raise --n or lower --eta");
   }
-  if (spec.layout.nearest < largest * (1.0 + kLatticeSlack)) {
+  if (spec.layout.nearest < largest * (1.0 + science::kLatticeSlack)) {
     throw UsageError("--eta", eta_text,
                      "the best triangular lattice for " + std::to_string(spec.n) +
                          " disks in this box has sites only " + readable(spec.layout.nearest) +

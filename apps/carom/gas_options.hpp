@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "hard_disk_setup.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 
 namespace carom::cli {
 
@@ -25,8 +25,8 @@ struct GasOptionText {
 struct GasSpec {
   std::uint64_t n = 0;
   double eta = 0.0;
-  std::vector<double> diameters;  // one per disk; all 1 without --mix
-  HardDiskLayout layout;          // the box of eta for these diameters
+  std::vector<double> diameters;   // one per disk; all 1 without --mix
+  science::HardDiskLayout layout;  // the box of eta for these diameters
   std::uint64_t equilibration_collisions = 0;
   double collisions_per_disk = 0.0;
   std::uint64_t seed = 0;

@@ -10,7 +10,7 @@ namespace carom::cli {
 
 GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
   GasOutcome outcome;
-  World world = make_hard_disk_world(spec.layout, spec.seed, spec.diameters);
+  World world = science::make_hard_disk_world(spec.layout, spec.seed, spec.diameters);
   outcome.equilibration_collisions = std::max<std::uint64_t>(spec.equilibration_collisions, spec.n);
   // Progress counts collisions: the equilibration's, then the measured run's by its time.
   const auto equilibration = static_cast<double>(outcome.equilibration_collisions);
@@ -25,8 +25,8 @@ GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
     outcome.interrupted_equilibrating = true;
     return outcome;
   }
-  const science::GasMonitorSettings settings =
-      gas_monitor_settings(spec.blocks, spec.collisions_per_disk, outcome.equilibration_rate);
+  const science::GasMonitorSettings settings = science::gas_monitor_settings(
+      spec.blocks, spec.collisions_per_disk, outcome.equilibration_rate);
   const science::PeriodicCell cell{{0.0, 0.0}, {spec.layout.side, spec.layout.side}};
   const double duration = 2.0 * spec.collisions_per_disk / outcome.equilibration_rate;
   const double start_time = world.time();

@@ -2,8 +2,6 @@
 // make it: build the gas, equilibrate, measure (carom/science/gas_monitor.hpp), time it.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <functional>
 
@@ -11,33 +9,6 @@
 #include "gas_options.hpp"
 
 namespace carom::cli {
-
-// Collisions per disk between two samples of the structure (g(r), ψ₆). A sample costs about as
-// much as 20 to 40 collisions per disk at the default range of g(r); one every 10 collisions
-// per disk keeps the measurements within the 15 % of the world's throughput that docs/
-// performance.md measures ("Hard-disk science").
-inline constexpr double kStructureEveryCollisionsPerDisk = 10.0;
-
-// Runs per block: at most this many (the MSD's resolution within a block) ...
-inline constexpr double kMostRunsPerBlock = 8.0;
-// ... and each run at least this many collisions per disk: after every run each disk's interval
-// is closed (O(N)), which must stay small beside the run's own work.
-inline constexpr double kLeastCollisionsPerDiskPerRun = 1.0;
-
-// The monitor's settings for B blocks over K collisions per disk, at the collision rate ω per disk
-// (K collisions per disk, K·N in all as in `carom bench`, take the time 2K/ω: ω counts each
-// collision for both of its disks). The benchmark of the measurements' cost uses the same.
-[[nodiscard]] inline science::GasMonitorSettings gas_monitor_settings(std::uint64_t blocks,
-                                                                      double collisions_per_disk,
-                                                                      double rate) {
-  science::GasMonitorSettings settings;
-  settings.blocks = blocks;
-  const double per_block = collisions_per_disk / static_cast<double>(blocks);
-  settings.runs_per_block = static_cast<std::size_t>(
-      std::clamp(std::floor(per_block / kLeastCollisionsPerDiskPerRun), 2.0, kMostRunsPerBlock));
-  settings.structure_interval = 2.0 * kStructureEveryCollisionsPerDisk / rate;
-  return settings;
-}
 
 struct GasOutcome {
   science::GasResults results;

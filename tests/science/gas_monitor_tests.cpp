@@ -9,7 +9,7 @@
 #include "carom/error.hpp"
 #include "carom/science/block_average.hpp"
 #include "carom/science/gas_monitor.hpp"
-#include "hard_disk_setup.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 #include "science/gas_run.hpp"
 
 namespace carom::science::test {
@@ -28,7 +28,7 @@ GasRunSpec dilute() {
 TEST(Unwrapping, FollowsTheWorldAcrossManyCells) {
   const GasRunSpec spec = dilute();
   const GasResults gas = run_gas(spec);
-  const double side = cli::hard_disk_layout(spec.n, spec.eta).side;
+  const double side = science::hard_disk_layout(spec.n, spec.eta).side;
   // The integrated displacement, wrapped, lands on the world's position up to the rounding of
   // summing a few hundred intervals per disk (each ~10⁻¹⁶ relative of a path of ~10⁴).
   EXPECT_LT(gas.max_unwrap_error, 1e-9 * side);
@@ -97,8 +97,8 @@ TEST(Structure, GOfRTendsToOneAndItsContactValueToThePressureRoute) {
 }
 
 TEST(Arguments, AreChecked) {
-  const cli::HardDiskLayout layout = cli::hard_disk_layout(16, 0.3);
-  World world = cli::make_hard_disk_world(layout, 1);
+  const science::HardDiskLayout layout = science::hard_disk_layout(16, 0.3);
+  World world = science::make_hard_disk_world(layout, 1);
   const PeriodicCell cell{{0.0, 0.0}, {layout.side, layout.side}};
   GasMonitorSettings one_block;
   one_block.blocks = 1;

@@ -5,16 +5,16 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "hard_disk_setup.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 
 namespace carom::science::test {
 
 GasResults run_gas(const GasRunSpec& spec) {
-  const cli::HardDiskLayout layout = cli::hard_disk_layout(spec.n, spec.eta);
+  const science::HardDiskLayout layout = science::hard_disk_layout(spec.n, spec.eta);
   if (!layout.box_wide_enough() || !layout.disks_fit()) {
     throw std::invalid_argument("run_gas: the lattice cannot hold this gas");
   }
-  World world = cli::make_hard_disk_world(layout, spec.seed);
+  World world = science::make_hard_disk_world(layout, spec.seed);
   const auto count = static_cast<double>(spec.n);
   const auto equilibration =
       static_cast<std::uint64_t>(std::round(spec.equilibrate_per_disk * count));

@@ -1,5 +1,5 @@
 // carom science tests: a measured run of the hard-disk gas of `carom gas` and `carom bench`
-// (apps/carom/hard_disk_setup.hpp), in one call.
+// (carom/science/hard_disk_gas.hpp), in one call.
 #pragma once
 
 #include <cstdint>

@@ -21,6 +21,8 @@
 // derivations and the exact results the values are tested against: docs/science.md.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -106,6 +108,34 @@ struct GasResults {
   std::vector<double> final_psi6_modulus;
   std::vector<double> final_psi6_angle;  // arg ψ₆,j in (−π, π]; 0 where a disk has no neighbour
 };
+
+// Collisions per disk between two samples of the structure (g(r), ψ₆). A sample costs about as
+// much as 20 to 40 collisions per disk at the default range of g(r); one every 10 collisions
+// per disk keeps the measurements' cost within 15 % of the world's throughput
+// (docs/performance.md).
+inline constexpr double kStructureEveryCollisionsPerDisk = 10.0;
+
+// Runs per block: at most this many (the MSD's resolution within a block) ...
+inline constexpr double kMostRunsPerBlock = 8.0;
+// ... and each run at least this many collisions per disk: after every run each disk's interval
+// is closed (O(N)), which must stay small beside the run's own work.
+inline constexpr double kLeastCollisionsPerDiskPerRun = 1.0;
+
+// The monitor's settings for B blocks over K collisions per disk, at the collision rate ω per disk
+// (K collisions per disk, K·N in all as in `carom bench`, take the time 2K/ω: ω counts each
+// collision for both of its disks), as `carom gas` and the benchmark of the measurements' cost
+// use them.
+[[nodiscard]] inline GasMonitorSettings gas_monitor_settings(std::uint64_t blocks,
+                                                             double collisions_per_disk,
+                                                             double rate) {
+  GasMonitorSettings settings;
+  settings.blocks = blocks;
+  const double per_block = collisions_per_disk / static_cast<double>(blocks);
+  settings.runs_per_block = static_cast<std::size_t>(
+      std::clamp(std::floor(per_block / kLeastCollisionsPerDiskPerRun), 2.0, kMostRunsPerBlock));
+  settings.structure_interval = 2.0 * kStructureEveryCollisionsPerDisk / rate;
+  return settings;
+}
 
 // Runs world for `duration` more time units and measures. The world must be periodic with the
 // given cell, hold no walls, at least two balls, all movable; duration > 0. Throws

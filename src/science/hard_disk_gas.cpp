@@ -1,4 +1,4 @@
-#include "hard_disk_setup.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-namespace carom::cli {
+namespace carom::science {
 namespace {
 
 // The smallest distance between two sites of a triangular lattice of rows × columns sites that
@@ -126,4 +126,4 @@ World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed,
   return world;
 }
 
-}  // namespace carom::cli
+}  // namespace carom::science

@@ -1,8 +1,7 @@
-// carom tool and benchmarks: the hard-disk scene that `carom bench` and bench/world_bench.cpp
-// share. N equal disks (diameter 1, mass 1, elastic) in a periodic square box sized for a given
-// packing fraction, started on a triangular lattice with Maxwell–Boltzmann velocities from a
-// seeded generator and no total momentum. This file depends on the library alone (no CLI11, no
-// fmt), so the benchmarks compile it as well.
+// carom science: the hard-disk gas that `carom bench`, `carom gas`, the benchmarks and the
+// science tests share. N equal disks (diameter 1, mass 1, elastic; or disks of given diameters)
+// in a periodic square box sized for a given packing fraction, started on a triangular lattice
+// with Maxwell–Boltzmann velocities from a seeded generator and no total momentum.
 #pragma once
 
 #include <cstdint>
@@ -10,7 +9,7 @@
 
 #include "carom/world.hpp"
 
-namespace carom::cli {
+namespace carom::science {
 
 inline constexpr double kDiskDiameter = 1.0;
 inline constexpr double kDiskRadius = kDiskDiameter / 2.0;
@@ -67,4 +66,4 @@ struct HardDiskLayout {
 [[nodiscard]] World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed,
                                          std::span<const double> diameters);
 
-}  // namespace carom::cli
+}  // namespace carom::science

@@ -1,6 +1,6 @@
-// The hard-disk scene of `carom bench` and bench/world_bench.cpp: the box gives the packing
-// fraction, the lattice holds every disk without overlap (up to the densest it claims), and the
-// velocities are seeded and carry no total momentum.
+// The hard-disk gas of carom::science (carom bench, carom gas, the benchmarks): the box gives the
+// packing fraction, the lattice holds every disk without overlap (up to the densest it claims), and
+// the velocities are seeded and carry no total momentum.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <numbers>
 #include <vector>
 
-#include "hard_disk_setup.hpp"
+#include "carom/science/hard_disk_gas.hpp"
 
-namespace carom::cli {
+namespace carom::science {
 namespace {
 
 TEST(HardDiskLayout, BoxGivesThePackingFraction) {
@@ -88,4 +88,4 @@ TEST(HardDiskWorld, SameSeedSameGasOtherSeedOtherGas) {
 }
 
 }  // namespace
-}  // namespace carom::cli
+}  // namespace carom::science

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "bench_goals.hpp"
-#include "child_process.hpp"
+#include "bench/bench_goals.hpp"
 #include "run_tool.hpp"
+#include "system/child_process.hpp"
 
 namespace carom::cli::test {
 namespace {

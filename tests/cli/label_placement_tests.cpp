@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "label_placement.hpp"
+#include "drawing/label_placement.hpp"
 
 namespace carom::cli {
 namespace {

@@ -1,11 +1,11 @@
-// The machine a benchmark report names (apps/carom/machine_info.hpp): the cache sizes read from a
-// folder laid out as Linux's /sys/devices/system/cpu/cpu0/cache, as the kernel writes them.
+// The machine a benchmark report names (apps/carom/bench/machine_info.hpp): the cache sizes read
+// from a folder laid out as Linux's /sys/devices/system/cpu/cpu0/cache, as the kernel writes them.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <string>
 
-#include "machine_info.hpp"
+#include "bench/machine_info.hpp"
 #include "run_tool.hpp"
 
 namespace carom::cli {

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "exit_codes.hpp"
+#include "options/exit_codes.hpp"
 #include "run_tool.hpp"
 #include "scene_files.hpp"
 

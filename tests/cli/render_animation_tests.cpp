@@ -9,11 +9,11 @@
 #include <optional>
 #include <string>
 
-#include "cairo_picture.hpp"
-#include "ffmpeg_pipe.hpp"
+#include "drawing/cairo_picture.hpp"
+#include "drawing/ffmpeg_pipe.hpp"
+#include "drawing/view_box.hpp"
 #include "render_scenes.hpp"
 #include "run_tool.hpp"
-#include "view_box.hpp"
 
 namespace carom::cli::test {
 namespace {

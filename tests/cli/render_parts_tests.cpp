@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "ball_colours.hpp"
 #include "carom/scene.hpp"
-#include "css_colour.hpp"
-#include "trail_recorder.hpp"
+#include "drawing/ball_colours.hpp"
+#include "drawing/css_colour.hpp"
+#include "drawing/trail_recorder.hpp"
 
 namespace carom::cli::test {
 namespace {

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "label_placement.hpp"
-#include "render_plot.hpp"
+#include "drawing/label_placement.hpp"
+#include "drawing/render_plot.hpp"
+#include "drawing/svg_plot.hpp"
 #include "render_scenes.hpp"
 #include "run_tool.hpp"
-#include "svg_plot.hpp"
 
 namespace carom::cli::test {
 namespace {

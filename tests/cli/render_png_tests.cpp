@@ -13,11 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include "cairo_picture.hpp"
 #include "carom/scene.hpp"
+#include "drawing/cairo_picture.hpp"
+#include "drawing/scene_picture.hpp"
 #include "render_scenes.hpp"
 #include "run_tool.hpp"
-#include "scene_picture.hpp"
 
 namespace carom::cli::test {
 namespace {

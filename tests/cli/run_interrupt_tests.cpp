@@ -13,8 +13,8 @@
 #include <thread>
 #include <vector>
 
-#include "exit_codes.hpp"
-#include "run_command.hpp"
+#include "commands/run_command.hpp"
+#include "options/exit_codes.hpp"
 #include "run_tool.hpp"
 #include "scene_files.hpp"
 

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "carom/bounce.hpp"
-#include "scalar_args.hpp"
-#include "usage_error.hpp"
+#include "options/scalar_args.hpp"
+#include "options/usage_error.hpp"
 
 namespace carom::cli {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "svg_writer.hpp"
+#include "drawing/svg_writer.hpp"
 
 namespace carom::cli {
 namespace {

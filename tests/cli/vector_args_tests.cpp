@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "usage_error.hpp"
-#include "vector_args.hpp"
+#include "options/usage_error.hpp"
+#include "options/vector_args.hpp"
 
 namespace carom::cli {
 namespace {

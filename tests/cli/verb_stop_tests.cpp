@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "exit_codes.hpp"
+#include "options/exit_codes.hpp"
 #include "run_tool.hpp"
 #include "scene_files.hpp"
 

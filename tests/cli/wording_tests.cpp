@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "exit_codes.hpp"
-#include "readable_number.hpp"
+#include "options/exit_codes.hpp"
+#include "options/readable_number.hpp"
 #include "run_tool.hpp"
 #include "scene_files.hpp"
 

@@ -1,0 +1,278 @@
+#include "commands/eos_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "carom/science/exact.hpp"
+#include "commands/gas_command.hpp"
+#include "drawing/science_plot.hpp"
+#include "gas/gas_options.hpp"
+#include "gas/gas_report.hpp"
+#include "gas/gas_session.hpp"
+#include "options/exit_codes.hpp"
+#include "options/option_value.hpp"
+#include "options/readable_number.hpp"
+#include "options/usage_error.hpp"
+#include "system/output_file.hpp"
+#include "system/progress_bar.hpp"
+#include "system/stop_signals.hpp"
+
+namespace carom::cli {
+namespace {
+
+// More points than this is a typo in the step (0.0001 for 0.01), not a sweep.
+constexpr std::size_t kMostPoints = 1000;
+constexpr std::uint64_t kMostThreads = 256;
+// A sweep's points are rounded to the decimals its numbers are written with, at most this many
+// (a double holds 15 to 17 significant digits; packing fractions are below 1).
+constexpr std::size_t kMostDecimals = 15;
+
+struct EosOptions {
+  GasOptionText gas;
+  std::string etas = "0.1:0.7:0.05";
+  std::string threads = "2";
+  std::string out;
+  bool json = false;
+};
+
+// FROM:TO:STEP, the points FROM, FROM + STEP, ... up to TO (a rounding beyond TO included).
+std::vector<double> parse_etas(const std::string& text) {
+  const OptionValue value{"--eta", text, "FROM:TO:STEP, or one packing fraction"};
+  std::vector<std::string_view> parts;
+  std::string_view rest(text);
+  for (std::size_t colon = rest.find(':'); colon != std::string_view::npos;
+       colon = rest.find(':')) {
+    parts.push_back(rest.substr(0, colon));
+    rest.remove_prefix(colon + 1);
+  }
+  parts.push_back(rest);
+  if (parts.size() == 1) return {parse_finite_number(parts[0], value)};
+  if (parts.size() != 3) reject(value, "give one number or three separated by colons");
+  const double from = parse_finite_number(parts[0], value);
+  const double to = parse_finite_number(parts[1], value);
+  const double step = parse_finite_number(parts[2], value);
+  if (!(step > 0.0)) reject(value, "the step must be > 0");
+  if (!(to >= from)) reject(value, "TO must not be below FROM");
+  const double count = std::floor((to - from) / step + 1e-9) + 1.0;
+  if (count > static_cast<double>(kMostPoints)) {
+    reject(value,
+           "that is " + readable(count) + " points, more than " + std::to_string(kMostPoints));
+  }
+  // Each point is the decimal the user means (0.1:0.7:0.1 gives 0.7, not 0.7000000000000001):
+  // from the index, not by adding steps, then rounded to the most decimals the three are
+  // written with.
+  std::size_t decimals = 0;
+  for (const std::string_view part : parts) {
+    const std::size_t point = part.find('.');
+    if (part.find_first_of("eE") != std::string::npos) decimals = kMostDecimals;
+    if (point != std::string::npos) decimals = std::max(decimals, part.size() - point - 1);
+  }
+  const double scale = std::pow(10.0, static_cast<double>(std::min(decimals, kMostDecimals)));
+  std::vector<double> etas;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) {
+    etas.push_back(std::round((from + static_cast<double>(i) * step) * scale) / scale);
+  }
+  return etas;
+}
+
+std::string table(const std::vector<GasSpec>& specs, const std::vector<GasOutcome>& outcomes) {
+  std::ostringstream out;
+  out << "| η | Z | ± | Henderson | (Z − Z_H)/Z_H | collisions | g(σ) | ψ6 | D |\n";
+  out << "|---|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const science::GasResults& r = outcomes[i].results;
+    const double henderson = science::henderson_z(specs[i].eta);
+    const ValueAndError z = with_error_parts(r.z.mean, r.z.error);
+    out << "| " << readable(specs[i].eta) << " | " << z.value << " | " << z.error << " | "
+        << rounded(henderson) << " | " << rounded((r.z.mean - henderson) / henderson) << " | "
+        << r.collisions << " | " << rounded(r.g_contact.mean) << " | " << rounded(r.psi6.mean)
+        << " | " << rounded(r.diffusion.mean) << " |\n";
+  }
+  return out.str();
+}
+
+std::string eos_csv(const std::vector<GasSpec>& specs, const std::vector<GasOutcome>& outcomes) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "eta,Z,Z_err,Z_henderson,collisions,time,collision_rate,collision_rate_err,g_contact,"
+         "g_contact_err,psi6,psi6_err,diffusion,diffusion_err\n";
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const science::GasResults& r = outcomes[i].results;
+    out << specs[i].eta << ',' << r.z.mean << ',' << r.z.error << ','
+        << science::henderson_z(specs[i].eta) << ',' << r.collisions << ',' << r.time << ','
+        << r.collision_rate.mean << ',' << r.collision_rate.error << ',' << r.g_contact.mean << ','
+        << r.g_contact.error << ',' << r.psi6.mean << ',' << r.psi6.error << ',' << r.diffusion.mean
+        << ',' << r.diffusion.error << '\n';
+  }
+  return out.str();
+}
+
+std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOutcome>& outcomes) {
+  PlotSpec plot{"Equation of state of hard disks, Z = PA/(NkT)",
+                "N = " + std::to_string(specs.front().n) + ", seed " +
+                    std::to_string(specs.front().seed) +
+                    "; error bars: block-average standard errors",
+                "packing fraction η",
+                "Z",
+                {}};
+  PlotSeries measured{"carom gas", "#1f77b4", {}, {}, {}, true, false};
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    measured.x.push_back(specs[i].eta);
+    measured.y.push_back(outcomes[i].results.z.mean);
+    measured.error.push_back(outcomes[i].results.z.error);
+  }
+  PlotSeries henderson{"Henderson (1 + η²/8)/(1 − η)²", "#d62728", {}, {}, {}, false, false};
+  const double low = specs.front().eta;
+  const double high = specs.back().eta;
+  constexpr int kCurvePoints = 100;
+  for (int k = 0; k <= kCurvePoints; ++k) {
+    const double eta = low + (high - low) * k / kCurvePoints;
+    henderson.x.push_back(eta);
+    henderson.y.push_back(science::henderson_z(eta));
+  }
+  plot.series.push_back(henderson);
+  plot.series.push_back(measured);
+  return render_plot(plot);
+}
+
+int run(const EosOptions& options) {
+  const std::vector<double> etas = parse_etas(options.etas);
+  std::vector<GasSpec> specs;
+  specs.reserve(etas.size());
+  for (const double eta : etas) specs.push_back(parse_gas_spec(options.gas, eta, options.etas));
+  const std::uint64_t threads =
+      parse_whole_number({"--threads", options.threads, "a whole number >= 1"});
+  if (threads < 1 || threads > kMostThreads) {
+    throw UsageError("--threads", options.threads, "between 1 and 256 threads");
+  }
+  // A signal stops every point's world; the points completed are written.
+  const StopOnSignals stop_on_signals;
+  // One World per thread: each takes the next point not yet taken, so a slow dense point does
+  // not hold up the others. Results land in their point's slot, so the order is the input's.
+  std::vector<GasOutcome> outcomes(specs.size());
+  std::vector<std::exception_ptr> failures(specs.size());
+  std::vector<char> completed(specs.size(), 0);
+  // Each point's fraction done, read by the progress bar.
+  std::vector<std::atomic<double>> done(specs.size());
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < specs.size() && !StopOnSignals::requested(); i = next++) {
+      try {
+        outcomes[i] =
+            run_gas_session(specs[i], [&done, i](double fraction) { done[i].store(fraction); });
+        completed[i] = outcomes[i].interrupted ? 0 : 1;
+      } catch (...) {
+        failures[i] = std::current_exception();
+      }
+      done[i].store(1.0);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::uint64_t t = 0; t < std::min<std::uint64_t>(threads, specs.size()); ++t)
+    pool.emplace_back(worker);
+  {
+    ProgressBar bar(true);
+    std::atomic<bool> finished{false};
+    std::thread watcher([&] {
+      while (!finished.load()) {
+        double sum = 0.0;
+        for (const std::atomic<double>& fraction : done) sum += fraction.load();
+        bar.update(sum / static_cast<double>(specs.size()), "");
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    });
+    for (std::thread& thread : pool) thread.join();
+    finished.store(true);
+    watcher.join();
+  }
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+  // After a signal, the points completed before it; otherwise all of them.
+  const std::size_t all_points = specs.size();
+  if (StopOnSignals::requested()) {
+    std::vector<GasSpec> kept_specs;
+    std::vector<GasOutcome> kept_outcomes;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      if (completed[i] == 0) continue;
+      kept_specs.push_back(specs[i]);
+      kept_outcomes.push_back(outcomes[i]);
+    }
+    specs = std::move(kept_specs);
+    outcomes = std::move(kept_outcomes);
+    std::cerr << "carom eos: " << StopOnSignals::what() << " with " << specs.size() << " of "
+              << all_points << " points complete"
+              << (specs.empty() ? ": nothing to write\n" : "; the outputs hold those\n");
+    if (specs.empty()) return StopOnSignals::exit_code();
+  }
+
+  if (!options.out.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(options.out, error);
+    if (error) {
+      std::cerr << "carom eos: error: --out \"" << options.out
+                << "\": cannot create it: " << error.message() << '\n';
+      return kExitUsage;
+    }
+    const std::vector<std::pair<std::string, std::string>> files{
+        {"eos.csv", eos_csv(specs, outcomes)},
+        {"eos.md", table(specs, outcomes)},
+        {"eos.svg", eos_plot(specs, outcomes)}};
+    for (const auto& [name, content] : files) {
+      const std::string path = (std::filesystem::path(options.out) / name).string();
+      if (const auto failure = write_output(path, content)) {
+        std::cerr << "carom eos: error: " << *failure << '\n';
+        return kExitUsage;
+      }
+    }
+  }
+  if (options.json) {
+    nlohmann::json points = nlohmann::json::array();
+    for (std::size_t i = 0; i < specs.size(); ++i)
+      points.push_back(gas_json(specs[i], outcomes[i]));
+    std::cout << nlohmann::json{{"points", points}}.dump() << '\n';
+  } else {
+    std::cout << table(specs, outcomes);
+  }
+  return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;
+}
+
+}  // namespace
+
+Command add_eos_command(CLI::App& app) {
+  CLI::App* eos =
+      app.add_subcommand("eos", "The equation of state Z(eta) of hard disks, beside Henderson's");
+  eos->footer(
+      "One `carom gas` run per packing fraction (see 'carom gas --help' for the gas and the\n"
+      "measurements), spread over --threads threads, each with its own World. Prints a\n"
+      "table (or --json: {\"points\": [one carom gas object per point]}); --out DIR writes\n"
+      "eos.csv, eos.md and eos.svg (Z with error bars and Henderson's\n"
+      "Z = (1 + eta^2/8)/(1 - eta)^2).\n\n"
+      "Examples:\n"
+      "  carom eos --eta 0.1:0.7:0.05 --n 400 --collisions 1000 --out eos\n"
+      "  carom eos --eta 0.05:0.3:0.05 --threads 2 --json");
+  auto options = std::make_shared<EosOptions>();
+  eos->add_option("--eta", options->etas, "Packing fractions FROM:TO:STEP (or one)")
+      ->type_name("FROM:TO:STEP")
+      ->capture_default_str();
+  add_gas_options(*eos, options->gas);
+  eos->add_option("--threads", options->threads, "Points run at once, one World each")
+      ->type_name("T")
+      ->capture_default_str();
+  eos->add_option("-o,--out", options->out, "Directory for eos.csv, eos.md, eos.svg")
+      ->type_name("DIR");
+  eos->add_flag("--json", options->json, "Print one JSON object, numbers exact, not a table");
+  return {eos, [options] { return run(*options); }};
+}
+
+}  // namespace carom::cli

@@ -1,0 +1,118 @@
+#include "drawing/render_animation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+#include "drawing/cairo_picture.hpp"
+#include "drawing/scene_picture.hpp"
+#include "drawing/trail_recorder.hpp"
+#include "system/output_file.hpp"
+#include "system/stop_signals.hpp"
+
+namespace carom::cli {
+namespace {
+
+double frame_time(double until, long long frames, long long k) {
+  return until * (static_cast<double>(k) / static_cast<double>(frames - 1));
+}
+
+// What the first run learns: where the balls go (their centres at contacts too, where trails
+// bend), how fast they get, and how many frames' times it reached (fewer when a signal stopped
+// it).
+struct RunSurvey {
+  ViewBox balls_seen;
+  double top_speed = 0.0;
+  long long frames = 0;
+};
+
+RunSurvey survey(const Scene& scene, double until, long long frames) {
+  SceneWorld scene_world = make_world(scene);
+  stop_world_on_signals(scene_world.world);
+  RunSurvey result;
+  std::vector<ContactEvent> contacts;
+  for (long long k = 0; k < frames; ++k) {
+    const double target = frame_time(until, frames, k);
+    contacts.clear();
+    step_scene(scene_world, target - scene_world.world.time(), &contacts);
+    if (scene_world.world.stop_reason() == StopReason::interrupted) break;
+    result.frames = k + 1;
+    result.balls_seen.add(balls_box(scene_world));
+    result.balls_seen.add(contact_centres(scene_world, contacts));
+    result.top_speed = std::max(result.top_speed, top_speed(scene_world));
+  }
+  return result;
+}
+
+}  // namespace
+
+long long frame_count(double until, double fps) {
+  return std::max(1LL, std::llround(until * fps)) + 1;
+}
+
+AnimationResult render_animation(const Scene& scene, const AnimationRequest& request) {
+  const long long all_frames = frame_count(request.until, request.fps);
+  const RunSurvey seen = survey(scene, request.until, all_frames);
+  // After a signal in the survey, the frames it reached are drawn (a run it has made already, so
+  // short); otherwise a signal while drawing ends the video at the last frame drawn.
+  const bool surveyed_all = seen.frames == all_frames;
+  if (seen.frames == 0) return {0, 0, 0, true, 0.0};  // stopped before the first frame: no video
+  long long frames = 0;
+
+  PictureStyle style;
+  style.mode = request.mode;
+  style.top_speed = seen.top_speed > 0.0 ? seen.top_speed : 1.0;
+  style.name_colours = request.name_colours;
+  frame_picture(style, scene, seen.balls_seen, request.view, request.arrows);
+  style.title = request.title;
+  const ImageLayout layout =
+      layout_image(style.view, request.width, request.mode == ColourMode::speed, true);
+  CairoImage image(layout.width, layout.height);
+
+  // Through a link, its target is replaced and the link kept.
+  const std::string target = link_target(request.path);
+  const std::string temporary = target + ".tmp";
+  const TemporaryFileGuard guard(temporary);
+  std::error_code ignored;
+  try {
+    FfmpegPipe ffmpeg(request.ffmpeg, temporary, request.format, layout.width, layout.height,
+                      request.fps);
+    SceneWorld scene_world = make_world(scene);
+    if (surveyed_all) stop_world_on_signals(scene_world.world);
+    std::optional<TrailRecorder> trails;
+    if (request.trail_seconds > 0.0) {
+      trails.emplace(scene_world, request.trail_seconds);
+      style.trails = &*trails;
+    }
+    std::vector<ContactEvent> contacts;
+    for (long long k = 0; k < seen.frames; ++k) {
+      contacts.clear();
+      const double time = frame_time(request.until, all_frames, k);
+      step_scene(scene_world, time - scene_world.world.time(), &contacts);
+      if (scene_world.world.stop_reason() == StopReason::interrupted) break;
+      frames = k + 1;
+      if (trails) trails->record(scene_world, contacts);
+      paint_picture(image, layout, draw_scene(scene_world, style));
+      ffmpeg.write_frame(image.pixels(), image.stride());
+    }
+    ffmpeg.finish();
+  } catch (...) {
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code renamed;
+  std::filesystem::rename(temporary, target, renamed);
+  if (renamed) {
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("cannot write " + request.path +
+                             ": cannot rename its temporary file "
+                             "onto it: " +
+                             renamed.message());
+  }
+  return {static_cast<int>(frames), layout.width, layout.height, frames < all_frames,
+          frame_time(request.until, all_frames, frames - 1)};
+}
+
+}  // namespace carom::cli

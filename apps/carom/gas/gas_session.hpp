@@ -1,0 +1,32 @@
+// carom tool: one measured run of a hard-disk gas, as `carom gas` and each point of `carom eos`
+// make it: build the gas, equilibrate, measure (carom/science/gas_monitor.hpp), time it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "carom/science/gas_monitor.hpp"
+#include "gas/gas_options.hpp"
+
+namespace carom::cli {
+
+struct GasOutcome {
+  science::GasResults results;
+  std::uint64_t equilibration_collisions = 0;  // resolved (at least one per disk)
+  double equilibration_rate = 0.0;             // ω seen while equilibrating
+  double wall_seconds = 0.0;                   // of the production run, measurements included
+  // Stopped by a signal: during equilibration (nothing measured), or during the measurement
+  // (results.interrupted: estimates over the blocks completed, maybe none).
+  bool interrupted = false;
+  bool interrupted_equilibrating = false;
+  // Whether there are estimates to report: a block at least was completed.
+  [[nodiscard]] bool measured() const { return !interrupted || results.blocks_done > 0; }
+};
+
+// Told now and then (every few thousand events) how far a session has got, from 0 to 1.
+using GasProgress = std::function<void(double fraction)>;
+
+// Runs the session; a signal (StopOnSignals) stops it within a few thousand events.
+[[nodiscard]] GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress = {});
+
+}  // namespace carom::cli

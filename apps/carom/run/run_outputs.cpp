@@ -1,0 +1,163 @@
+#include "run/run_outputs.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <nlohmann/json.hpp>
+
+namespace carom::cli {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
+  std::string extension = path.substr(dot);
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// The XYZ species of a ball: its name up to a '#' (a generator's balls share their generator's
+// name), or "ball". Spaces would split the column, so they become underscores.
+std::string species(const SceneBall& ball) {
+  if (!ball.name || ball.name->empty()) return "ball";
+  std::string name = ball.name->substr(0, ball.name->find('#'));
+  if (name.empty()) return "ball";
+  for (char& c : name) {
+    if (std::isspace(static_cast<unsigned char>(c)) != 0 || c == '"') c = '_';
+  }
+  return name;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+std::string exact_number(double value) {
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return {buffer.data(), result.ptr};
+}
+
+std::optional<FrameFormat> frame_format_of(const std::string& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".csv") return FrameFormat::csv;
+  if (extension == ".xyz") return FrameFormat::xyz;
+  return std::nullopt;
+}
+
+BallDirectory::BallDirectory(const SceneWorld& built) {
+  for (std::size_t i = 0; i < built.balls.size(); ++i) {
+    if (!built.balls[i].is_null()) balls_.emplace(key(built.balls[i]), i);
+  }
+  for (std::size_t k = 0; k < built.pockets.size(); ++k) pockets_.emplace(key(built.pockets[k]), k);
+}
+
+std::uint64_t BallDirectory::key(BallId id) {
+  return (static_cast<std::uint64_t>(id.generation) << 32U) | id.index;
+}
+
+std::optional<std::size_t> BallDirectory::ball_index(BallId id) const {
+  const auto found = balls_.find(key(id));
+  if (found == balls_.end()) return std::nullopt;
+  return found->second;
+}
+
+std::optional<std::size_t> BallDirectory::pocket_index(BallId id) const {
+  const auto found = pockets_.find(key(id));
+  if (found == pockets_.end()) return std::nullopt;
+  return found->second;
+}
+
+void FrameWriter::write_frame(const SceneWorld& built) {
+  const double time = built.time();
+  std::size_t live = 0;
+  for (const BallId id : built.balls) live += id.is_null() ? 0U : 1U;
+  buffer_.clear();
+  if (format_ == FrameFormat::csv) {
+    if (frames_ == 0) buffer_ += "time,index,name,x,y,vx,vy,radius\n";
+  } else {
+    // Extended XYZ as OVITO and ASE read it: 3D columns with z = 0, the box or cell as Lattice
+    // with its Origin, periodicity per axis.
+    buffer_ += std::to_string(live) + "\n";
+    const SceneSettings& w = scene_->world;
+    if (w.boundary != Boundary::open) {
+      const Vec2 size = w.upper - w.lower;
+      buffer_ += "Lattice=\"" + exact_number(size.x) + " 0 0 0 " + exact_number(size.y) +
+                 " 0 0 0 1\" Origin=\"" + exact_number(w.lower.x) + " " + exact_number(w.lower.y) +
+                 " -0.5\" ";
+      buffer_ += w.boundary == Boundary::periodic ? "pbc=\"T T F\" " : "pbc=\"F F F\" ";
+    }
+    buffer_ +=
+        "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:index:I:1 Time=" + exact_number(time) +
+        "\n";
+  }
+  for (std::size_t i = 0; i < built.balls.size(); ++i) {
+    const BallId id = built.balls[i];
+    if (id.is_null()) continue;
+    const Vec2 p = built.world.position(id);
+    const Vec2 v = built.world.velocity(id);
+    const SceneBall& ball = built.scene.balls[i];
+    if (format_ == FrameFormat::csv) {
+      buffer_ += exact_number(time) + "," + std::to_string(i) + "," +
+                 csv_field(ball.name.value_or("")) + "," + exact_number(p.x) + "," +
+                 exact_number(p.y) + "," + exact_number(v.x) + "," + exact_number(v.y) + "," +
+                 exact_number(ball.radius) + "\n";
+    } else {
+      buffer_ += species(ball) + " " + exact_number(p.x) + " " + exact_number(p.y) + " 0 " +
+                 exact_number(v.x) + " " + exact_number(v.y) + " 0 " + exact_number(ball.radius) +
+                 " " + std::to_string(i) + "\n";
+    }
+  }
+  out_.write(buffer_);
+  ++frames_;
+}
+
+void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDirectory& directory,
+                        const SceneWorld& built, std::size_t wall_offset) {
+  buffer_.clear();
+  const auto index_json = [&](BallId id) -> nlohmann::ordered_json {
+    if (const auto i = directory.ball_index(id)) return *i;
+    return nullptr;
+  };
+  for (const ContactEvent& c : contacts) {
+    nlohmann::ordered_json line;
+    line["time"] = built.start_time + c.time;
+    const auto pocket_a = directory.pocket_index(c.a);
+    const auto pocket_b = directory.pocket_index(c.b);
+    if (c.kind == ContactKind::ball_ball && (pocket_a || pocket_b)) {
+      line["kind"] = "potted";
+      line["ball"] = index_json(pocket_a ? c.b : c.a);
+      line["pocket"] = pocket_a ? *pocket_a : *pocket_b;
+    } else if (c.kind == ContactKind::ball_ball) {
+      line["kind"] = "ball_ball";
+      line["a"] = index_json(c.a);
+      line["b"] = index_json(c.b);
+    } else {
+      line["kind"] = "ball_wall";
+      line["a"] = index_json(c.a);
+      // Box walls are the world's 0-3; the scene's own walls are numbered from 0 after them.
+      if (c.wall < wall_offset) {
+        line["box_wall"] = c.wall;
+      } else {
+        line["wall"] = c.wall - wall_offset;
+      }
+    }
+    line["point"] = {c.point.x, c.point.y};
+    line["normal"] = {c.normal.x, c.normal.y};
+    line["approach_speed"] = c.approach_speed;
+    line["impulse"] = c.impulse;
+    buffer_ += line.dump() + "\n";
+  }
+  out_.write(buffer_);
+}
+
+}  // namespace carom::cli

@@ -1,0 +1,256 @@
+#include "system/output_file.hpp"
+
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+#include "options/readable_number.hpp"
+
+namespace carom::cli {
+namespace {
+
+// Content is handed to the system in pieces of this size.
+constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+// Links followed before giving up, as the kernel does (ELOOP).
+constexpr int kMostLinks = 40;
+
+// What a name leads to through its symbolic links.
+struct Resolved {
+  std::filesystem::path path;  // the final target
+  bool exists = false;
+  struct stat status {};
+  int error = 0;  // errno of a failure to follow the links
+};
+
+Resolved resolve(const std::string& name) {
+  Resolved r;
+  r.path = name;
+  for (int k = 0; k <= kMostLinks; ++k) {
+    if (::lstat(r.path.c_str(), &r.status) != 0) {
+      if (errno != ENOENT) r.error = errno;
+      return r;
+    }
+    if (!S_ISLNK(r.status.st_mode)) {
+      r.exists = true;
+      return r;
+    }
+    std::error_code error;
+    const std::filesystem::path next = std::filesystem::read_symlink(r.path, error);
+    if (error) {
+      r.error = error.value();
+      return r;
+    }
+    r.path = next.is_absolute() ? next : r.path.parent_path() / next;
+  }
+  r.error = ELOOP;
+  return r;
+}
+
+std::filesystem::path folder_of(const std::filesystem::path& path) {
+  return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+}
+
+bool written_directly(const struct stat& status) {
+  return S_ISCHR(status.st_mode) || S_ISFIFO(status.st_mode) || S_ISSOCK(status.st_mode);
+}
+
+// What is wrong with the target itself, for any use: a folder, a disk, an unfollowable link.
+std::optional<std::string> refusal(const Resolved& r) {
+  if (r.error != 0) return std::string("cannot follow its links: ") + std::strerror(r.error);
+  if (!r.exists) return std::nullopt;
+  if (S_ISDIR(r.status.st_mode)) return "is a folder";
+  if (S_ISBLK(r.status.st_mode))
+    return "is a block device (a disk): refused, it would be overwritten";
+  return std::nullopt;
+}
+
+int connect_socket(const std::filesystem::path& path) {
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string text = path.string();
+  if (text.size() >= sizeof address.sun_path) {
+    errno = ENAMETOOLONG;
+    return -1;
+  }
+  std::memcpy(address.sun_path, text.c_str(), text.size() + 1);
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return -1;
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the sockets API's own cast.
+  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
+    const int error = errno;
+    ::close(fd);
+    errno = error;
+    return -1;
+  }
+  return fd;
+}
+
+bool write_all(int fd, std::string_view content) {
+  while (!content.empty()) {
+    const ssize_t written = ::write(fd, content.data(), content.size());
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    content.remove_prefix(static_cast<std::size_t>(written));
+  }
+  return true;
+}
+
+}  // namespace
+
+OutputFile::~OutputFile() { discard(); }
+
+void OutputFile::discard() {
+  if (fd_ >= 0 && owns_fd_) ::close(fd_);
+  fd_ = -1;
+  if (!temporary_.empty()) ::unlink(temporary_.c_str());
+  temporary_.clear();
+  guard_ = TemporaryFileGuard();
+}
+
+std::optional<std::string> OutputFile::open(const std::string& name) {
+  discard();
+  name_ = name;
+  error_ = 0;
+  buffer_.clear();
+  if (name == kStandardOutput) {
+    fd_ = STDOUT_FILENO;
+    owns_fd_ = false;
+    return std::nullopt;
+  }
+  if (name.empty()) return std::string("the file name is empty");
+  const Resolved r = resolve(name);
+  if (auto problem = refusal(r)) return name + " " + *problem;
+  owns_fd_ = true;
+  if (r.exists && written_directly(r.status)) {
+    fd_ = S_ISSOCK(r.status.st_mode) ? connect_socket(r.path)
+                                     : ::open(r.path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd_ < 0) return "cannot open " + name + ": " + std::strerror(errno);
+    return std::nullopt;
+  }
+  target_ = r.path.string();
+  temporary_ = target_ + ".tmp";
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
+    const int error = errno;
+    temporary_.clear();
+    return "cannot create " + name + " (its temporary file " + target_ +
+           ".tmp): " + std::strerror(error);
+  }
+  guard_ = TemporaryFileGuard(temporary_);
+  // A file replaced keeps its permissions.
+  if (r.exists) static_cast<void>(::fchmod(fd_, r.status.st_mode & 07777));
+  return std::nullopt;
+}
+
+void OutputFile::flush() {
+  if (error_ == 0 && !buffer_.empty() && !write_all(fd_, buffer_))
+    error_ = errno != 0 ? errno : EIO;
+  buffer_.clear();
+}
+
+void OutputFile::write(std::string_view content) {
+  if (fd_ < 0 || error_ != 0) return;
+  buffer_.append(content);
+  if (buffer_.size() >= kBufferBytes) flush();
+}
+
+std::optional<std::string> OutputFile::commit() {
+  if (fd_ < 0) return "cannot write " + name_ + ": it is not open";
+  flush();
+  int error = error_;
+  if (owns_fd_ && ::close(fd_) != 0 && error == 0) error = errno;
+  fd_ = -1;
+  if (error != 0) {
+    discard();
+    return "cannot write " + name_ + ": " + std::strerror(error);
+  }
+  if (!temporary_.empty()) {
+    if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
+      error = errno;
+      discard();
+      return "cannot write " + name_ +
+             ": cannot rename its temporary file onto it: " + std::strerror(error);
+    }
+    temporary_.clear();
+    guard_ = TemporaryFileGuard();
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> write_output(const std::string& name, std::string_view content) {
+  OutputFile out;
+  if (auto problem = out.open(name)) return problem;
+  out.write(content);
+  return out.commit();
+}
+
+std::optional<std::string> check_output(const std::string& name) {
+  if (name == kStandardOutput) return std::nullopt;
+  if (name.empty()) return std::string("the file name is empty");
+  const Resolved r = resolve(name);
+  if (auto problem = refusal(r)) return problem;
+  if (r.exists && written_directly(r.status)) {
+    if (::access(r.path.c_str(), W_OK) != 0) return std::string(std::strerror(errno));
+    return std::nullopt;
+  }
+  const std::filesystem::path folder = folder_of(r.path);
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) {
+    return "its folder " + folder.string() + " does not exist";
+  }
+  // Tried for real, with the temporary file's own name: what a run would do at its end.
+  const std::string temporary = r.path.string() + ".tmp";
+  // An existing one may be another run's; it is not touched.
+  if (std::filesystem::exists(temporary, error)) {
+    return "its temporary file " + temporary + " exists already (another run's?)";
+  }
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    return "cannot create a file in " + folder.string() + ": " + std::strerror(errno);
+  }
+  ::close(fd);
+  ::unlink(temporary.c_str());
+  return std::nullopt;
+}
+
+std::optional<std::string> check_room(const std::string& name, double bytes) {
+  if (!replaced_by_rename(name)) return std::nullopt;
+  const std::filesystem::path folder = folder_of(link_target(name));
+  struct statvfs room {};
+  if (::statvfs(folder.c_str(), &room) != 0) return std::nullopt;  // unknown: not refused
+  const double free_bytes = static_cast<double>(room.f_bavail) * static_cast<double>(room.f_frsize);
+  if (bytes <= free_bytes) return std::nullopt;
+  return "would take about " + readable_bytes(bytes) + " and " + folder.string() + " has " +
+         readable_bytes(free_bytes) + " free";
+}
+
+bool same_output(const std::string& a, const std::string& b) {
+  if (a == kStandardOutput || b == kStandardOutput) return a == b;
+  if (!replaced_by_rename(a) || !replaced_by_rename(b)) return false;  // two devices may be one
+  std::error_code error_a;
+  std::error_code error_b;
+  const auto path_a = std::filesystem::weakly_canonical(link_target(a), error_a);
+  const auto path_b = std::filesystem::weakly_canonical(link_target(b), error_b);
+  if (error_a || error_b) return link_target(a) == link_target(b);
+  return path_a == path_b;
+}
+
+std::string link_target(const std::string& name) { return resolve(name).path.string(); }
+
+bool replaced_by_rename(const std::string& name) {
+  if (name == kStandardOutput) return false;
+  const Resolved r = resolve(name);
+  return r.error == 0 && (!r.exists || S_ISREG(r.status.st_mode));
+}
+
+}  // namespace carom::cli

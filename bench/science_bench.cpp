@@ -22,17 +22,13 @@ constexpr std::uint64_t kBlocks = 16;
 
 struct Gas {
   World world;
-  science::PeriodicCell cell;
   double iteration_time = 0.0;  // the time kCollisionsPerDiskPerIteration take
   science::GasMonitorSettings settings;
 };
 
 Gas make_gas(std::uint64_t n, double eta) {
   const science::HardDiskLayout layout = science::hard_disk_layout(n, eta);
-  Gas gas{science::make_hard_disk_world(layout, kSeed),
-          {{0.0, 0.0}, {layout.side, layout.side}},
-          0.0,
-          {}};
+  Gas gas{science::make_hard_disk_world(layout, kSeed), 0.0, {}};
   const double rate = science::equilibrate(gas.world, kEquilibrationPerDisk * n);
   gas.iteration_time = 2.0 * kCollisionsPerDiskPerIteration / rate;
   gas.settings = science::gas_monitor_settings(kBlocks, kCollisionsPerDiskPerIteration, rate);
@@ -58,7 +54,7 @@ void BM_GasMeasured(benchmark::State& state) {
   double z = 0.0;
   for (auto _ : state) {
     const science::GasResults results =
-        science::measure_gas(gas.world, gas.cell, gas.iteration_time, gas.settings);
+        science::measure_gas(gas.world, gas.iteration_time, gas.settings);
     collisions += results.collisions;
     z = results.z.mean;
   }

@@ -130,19 +130,10 @@ struct SceneGenerator {
   std::uint64_t seed = 1;  // for random placement and random velocities (std::mt19937_64)
 };
 
-struct SceneSettings {
-  Boundary boundary = Boundary::open;
-  Vec2 lower;  // box or periodic cell
-  Vec2 upper;
-  double restitution = 1.0;
-  double collapse_time = 0.0;
-  double cell_size = 0.0;
-};
-
 struct Scene {
   std::string description;  // free text for the reader
   SceneUnits units;
-  SceneSettings world;
+  WorldDef world;     // the world's boundary and settings, as a World is made with
   double time = 0.0;  // the scene's clock at the start (a saved scene continues from it)
   std::vector<SceneBall> balls;
   std::vector<Segment> segments;

@@ -21,6 +21,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "carom/bounce.hpp"
@@ -100,8 +101,8 @@ enum class StopReason : std::uint8_t {
 
 // What a run's progress callback is told (see set_progress_callback).
 struct RunStatus {
-  double time = 0.0;          // the world's time: that of the event processed last
-  std::uint64_t events = 0;   // events processed by this run so far (contacts and cell crossings)
+  double time = 0.0;           // the world's time: that of the event processed last
+  std::uint64_t events = 0;    // events processed by this run so far (contacts and cell crossings)
   std::uint64_t contacts = 0;  // contacts resolved by this run so far
 };
 
@@ -148,6 +149,11 @@ class World {
   // (lower-left to lower-right), right, top, left (counter-clockwise).
   WallId add_box(Vec2 lower, Vec2 upper);
   [[nodiscard]] std::size_t wall_count() const noexcept;
+  // A wall's shape as it was added: a Segment (a box boundary's four walls, ids 0–3, and every
+  // segment) or an Arc. Throws InvalidArgument for an id at or past wall_count().
+  [[nodiscard]] std::variant<Segment, Arc> wall(WallId id) const;
+  // The definition the world was made with, as given.
+  [[nodiscard]] const WorldDef& def() const noexcept;
 
   // ---- advancing time ----
   // Advances exactly dt (>= 0), resolving every contact in time order; returns the time

@@ -19,7 +19,7 @@ BallGrid::BallGrid(double cell_size, std::optional<PeriodicCell> periodic)
     cell_y_ = 1.0;
   }
   if (periodic_) {
-    const Vec2 size = periodic_->upper - periodic_->lower;
+    const Vec2 size = periodic_->period();
     columns_ = std::max<std::int64_t>(
         1, static_cast<std::int64_t>(std::min(kMaxCellCoordinate, std::floor(size.x / cell_x_))));
     rows_ = std::max<std::int64_t>(
@@ -31,7 +31,7 @@ BallGrid::BallGrid(double cell_size, std::optional<PeriodicCell> periodic)
 
 BallGrid::Cell BallGrid::cell_of(Vec2 position) const {
   Vec2 p = position;
-  if (periodic_) p -= periodic_->lower;
+  if (periodic_) p -= periodic_->lower();
   const double fx = std::clamp(std::floor(p.x / cell_x_), -kMaxCellCoordinate, kMaxCellCoordinate);
   const double fy = std::clamp(std::floor(p.y / cell_y_), -kMaxCellCoordinate, kMaxCellCoordinate);
   auto x = static_cast<std::int64_t>(std::isnan(fx) ? 0.0 : fx);
@@ -63,13 +63,7 @@ void BallGrid::insert(std::size_t index, Vec2 position) {
 }
 
 Vec2 BallGrid::offset(Vec2 a, Vec2 b) const {
-  Vec2 d = b - a;
-  if (periodic_) {
-    const Vec2 size = periodic_->upper - periodic_->lower;
-    d.x -= size.x * std::round(d.x / size.x);
-    d.y -= size.y * std::round(d.y / size.y);
-  }
-  return d;
+  return periodic_ ? periodic_->minimum_image(b - a) : b - a;
 }
 
 }  // namespace carom::scene_detail

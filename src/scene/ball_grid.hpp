@@ -8,15 +8,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "carom/geometry.hpp"
 #include "carom/vec2.hpp"
 
 namespace carom::scene_detail {
-
-// A periodic cell [lower, upper) whose opposite edges are the same.
-struct PeriodicCell {
-  Vec2 lower;
-  Vec2 upper;
-};
 
 class BallGrid {
  public:

@@ -165,7 +165,7 @@ std::vector<Vec2> random_positions(const Scene& scene, const SceneGenerator& g, 
   }
   std::optional<PeriodicCell> cell;
   if (scene.world.boundary == Boundary::periodic) {
-    cell = PeriodicCell{scene.world.lower, scene.world.upper};
+    cell = PeriodicCell(scene.world.lower, scene.world.upper);
   }
   BallGrid grid(2.0 * largest, cell);
   for (std::size_t i = 0; i < centres.size(); ++i) grid.insert(i, centres[i]);

@@ -138,7 +138,7 @@ void check_overlaps(const Scene& scene, const std::vector<SceneBall>& balls,
   for (std::size_t i = 0; i < total; ++i) largest = std::max(largest, radius(i));
   std::optional<PeriodicCell> cell;
   if (scene.world.boundary == Boundary::periodic) {
-    cell = PeriodicCell{scene.world.lower, scene.world.upper};
+    cell = PeriodicCell(scene.world.lower, scene.world.upper);
   }
   BallGrid grid(2.0 * largest, cell);
   const auto label = [&](std::size_t i) {
@@ -214,7 +214,7 @@ void separate_touching(const Scene& scene, std::vector<SceneBall>& balls) {
   for (const ScenePocket& p : scene.pockets) largest = std::max(largest, p.radius);
   std::optional<PeriodicCell> cell;
   if (scene.world.boundary == Boundary::periodic) {
-    cell = PeriodicCell{scene.world.lower, scene.world.upper};
+    cell = PeriodicCell(scene.world.lower, scene.world.upper);
   }
   // Moving a ball out by twice its overlap (plus a few ulps of the reach) leaves it clear of the
   // one it touched whatever the rounding of the move itself.
@@ -233,8 +233,9 @@ void separate_touching(const Scene& scene, std::vector<SceneBall>& balls) {
       ball.position.y = std::clamp(ball.position.y, lo.y, hi.y);
     }
     for (const SceneWall& wall : walls) {
-      const Vec2 nearest = std::visit(
-          [&](const auto& shape) { return nearest_point(shape, ball.position); }, wall.shape);
+      const Vec2 nearest =
+          std::visit([&](const auto& shape) { return carom::nearest_point(shape, ball.position); },
+                     wall.shape);
       const double overlap = ball.radius - distance(nearest, ball.position);
       if (overlap >= 0.0) push(ball, ball.position - nearest, overlap, ball.radius);
     }

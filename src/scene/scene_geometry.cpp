@@ -7,33 +7,9 @@
 #include <cstdio>
 #include <numbers>
 
+#include "carom/geometry.hpp"
+
 namespace carom::scene_detail {
-
-Vec2 nearest_point(const Segment& segment, Vec2 p) {
-  const Vec2 along = segment.b - segment.a;
-  const double length_sq = length_squared(along);
-  if (!(length_sq > 0.0)) return segment.a;
-  const double t = std::clamp(dot(p - segment.a, along) / length_sq, 0.0, 1.0);
-  return segment.a + along * t;
-}
-
-Vec2 nearest_point(const Arc& arc, Vec2 p) {
-  const Vec2 start =
-      arc.center + Vec2{std::cos(arc.start_angle), std::sin(arc.start_angle)} * arc.radius;
-  const Vec2 end = arc.center + Vec2{std::cos(arc.end_angle), std::sin(arc.end_angle)} * arc.radius;
-  const Vec2 offset = p - arc.center;
-  if (length_squared(offset) > 0.0) {
-    // The angle of p measured counter-clockwise from the start, in [0, 2π).
-    const double two_pi = 2.0 * std::numbers::pi;
-    double angle = std::atan2(offset.y, offset.x) - arc.start_angle;
-    angle = std::fmod(angle, two_pi);
-    if (angle < 0.0) angle += two_pi;
-    if (angle <= arc.end_angle - arc.start_angle) {
-      return arc.center + normalized(offset) * arc.radius;
-    }
-  }
-  return length_squared(start - p) <= length_squared(end - p) ? start : end;
-}
 
 std::vector<SceneWall> scene_walls(const Scene& scene) {
   std::vector<SceneWall> walls;
@@ -56,8 +32,7 @@ std::vector<SceneWall> scene_walls(const Scene& scene) {
 }
 
 double distance_to_wall(const SceneWall& wall, Vec2 p) {
-  return std::visit([p](const auto& shape) { return distance(nearest_point(shape, p), p); },
-                    wall.shape);
+  return std::visit([p](const auto& shape) { return carom::distance(shape, p); }, wall.shape);
 }
 
 std::string number_text(double value) {

@@ -1,5 +1,5 @@
-// carom scenes internal: distances from a point to the static shapes, and the scene's walls as a
-// flat list in the world's order.
+// carom scenes internal: the scene's walls as a flat list in the world's order, and distances to
+// them (carom/geometry.hpp's, the World's own).
 #pragma once
 
 #include <string>
@@ -10,9 +10,6 @@
 #include "json_walk.hpp"
 
 namespace carom::scene_detail {
-
-[[nodiscard]] Vec2 nearest_point(const Segment& segment, Vec2 p);
-[[nodiscard]] Vec2 nearest_point(const Arc& arc, Vec2 p);
 
 // One wall of the scene and where it came from ("segments[2]", "polylines[0].points[3]").
 struct SceneWall {

@@ -70,8 +70,8 @@ SceneUnits read_units(const ObjectFields& fields) {
   return units;
 }
 
-SceneSettings read_settings(const ObjectFields& fields) {
-  SceneSettings settings;
+WorldDef read_settings(const ObjectFields& fields) {
+  WorldDef settings;
   if (!fields.has("world")) return settings;
   const ObjectFields w(fields.source(), fields.at("world"), fields.path_of("world"),
                        {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size"});

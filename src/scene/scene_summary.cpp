@@ -37,9 +37,9 @@ SceneSummary summarize(const Scene& scene, std::span<const SceneBall> balls) {
     const Vec2 size = scene.world.upper - scene.world.lower;
     s.packing_fraction = s.ball_area / (size.x * size.y);
   }
-  std::optional<scene_detail::PeriodicCell> cell;
+  std::optional<PeriodicCell> cell;
   if (scene.world.boundary == Boundary::periodic) {
-    cell = scene_detail::PeriodicCell{scene.world.lower, scene.world.upper};
+    cell = PeriodicCell(scene.world.lower, scene.world.upper);
   }
   scene_detail::BallGrid grid(4.0 * largest, cell);
   const auto consider = [&](std::size_t i, std::size_t j) {

@@ -62,13 +62,7 @@ std::optional<std::size_t> SceneWorld::index_of(BallId id) const {
 SceneWorld make_world(const Scene& scene) {
   std::vector<SceneBall> balls = scene_detail::check_scene(scene);
   scene_detail::separate_touching(scene, balls);
-  WorldDef def;
-  def.boundary = scene.world.boundary;
-  def.lower = scene.world.lower;
-  def.upper = scene.world.upper;
-  def.restitution = scene.world.restitution;
-  def.collapse_time = scene.world.collapse_time;
-  def.cell_size = scene.world.cell_size;
+  const WorldDef& def = scene.world;
   SceneWorld sw{[&] {
                   try {
                     return World(def);

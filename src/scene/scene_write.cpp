@@ -125,7 +125,7 @@ std::string to_json_text(const Scene& scene) {
                                   .add("time", str(scene.units.time))
                                   .add("mass", str(scene.units.mass))
                                   .done();
-  const SceneSettings& w = scene.world;
+  const WorldDef& w = scene.world;
   out += ",\n  \"world\": " + Line()
                                   .add("boundary", boundary_text(w.boundary))
                                   .add("lower", vec(w.lower))

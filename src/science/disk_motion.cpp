@@ -7,15 +7,13 @@ namespace carom::science {
 namespace {
 
 // x reduced into [−side/2, side/2]: the nearest periodic image of a difference.
-double nearest_image(double x, double side) { return x - side * std::round(x / side); }
 
 }  // namespace
 
-DiskMotion::DiskMotion(const World& world, std::span<const BallId> ids, Vec2 cell_lower,
-                       Vec2 cell_upper, double bin_width, std::size_t bins)
+DiskMotion::DiskMotion(const World& world, std::span<const BallId> ids, const PeriodicCell& cell,
+                       double bin_width, std::size_t bins)
     : ids_(ids),
-      lower_(cell_lower),
-      side_(cell_upper - cell_lower),
+      cell_(cell),
       inverse_mass_(ids.size()),
       since_(ids.size(), world.time()),
       velocity_(ids.size()),
@@ -71,7 +69,7 @@ void DiskMotion::synchronise(const World& world) {
     velocity_[disk] = world.velocity(ids_[disk]);
     const Vec2 unwrapped = start_[disk] + displacement_[disk];
     const Vec2 off = unwrapped - world.position(ids_[disk]);
-    const double error = length(Vec2{nearest_image(off.x, side_.x), nearest_image(off.y, side_.y)});
+    const double error = length(cell_.minimum_image(off));
     max_unwrap_error_ = std::max(max_unwrap_error_, error);
   }
 }

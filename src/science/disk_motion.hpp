@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "carom/geometry.hpp"
 #include "carom/vec2.hpp"
 #include "carom/world.hpp"
 
@@ -25,7 +26,7 @@ class DiskMotion {
  public:
   // Starts every disk's interval at the world's time, with its position and velocity there.
   // The speed histogram has `bins` bins of width bin_width, plus one for faster disks.
-  DiskMotion(const World& world, std::span<const BallId> ids, Vec2 cell_lower, Vec2 cell_upper,
+  DiskMotion(const World& world, std::span<const BallId> ids, const PeriodicCell& cell,
              double bin_width, std::size_t bins);
 
   // Closes the interval of each disk of the contact at its time, then applies the impulse.
@@ -48,8 +49,7 @@ class DiskMotion {
   void close(std::size_t disk, double time);
 
   std::span<const BallId> ids_;
-  Vec2 lower_;
-  Vec2 side_;
+  PeriodicCell cell_;
   std::vector<std::uint32_t> disk_of_slot_;
   std::vector<double> inverse_mass_;
   std::vector<double> since_;  // start time of each disk's open interval

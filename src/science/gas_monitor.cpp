@@ -39,15 +39,15 @@ std::vector<double> finite_only(const std::vector<double>& values) {
 
 }  // namespace
 
-GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
-                       const GasMonitorSettings& settings) {
+GasResults measure_gas(World& world, double duration, const GasMonitorSettings& settings) {
   const std::vector<BallId> ids = world.balls();
   const std::size_t n = ids.size();
   require(n >= 2, "world", std::to_string(n) + " balls", "at least 2 balls");
   require(world.wall_count() == 0, "world", std::to_string(world.wall_count()) + " walls",
           "no walls (the pressure is measured from ball-ball collisions only)");
-  require(cell.upper.x > cell.lower.x && cell.upper.y > cell.lower.y, "cell", "empty",
-          "upper > lower on both axes");
+  require(world.def().boundary == Boundary::periodic, "world", "not periodic",
+          "a periodic cell (the measurements assume no walls and wrap distances)");
+  const PeriodicCell cell(world.def().lower, world.def().upper);
   require(settings.blocks >= 2, "settings.blocks", std::to_string(settings.blocks),
           "at least 2 blocks for an error estimate");
   require(settings.runs_per_block >= kFewestRunsPerBlock, "settings.runs_per_block",
@@ -65,7 +65,7 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
 
   GasResults results;
   results.n = n;
-  const Vec2 side = cell.upper - cell.lower;
+  const Vec2 side = cell.period();
   const double area = side.x * side.y;
   double covered = 0.0;
   std::vector<double> radius(n);
@@ -92,10 +92,9 @@ GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
   const double thermal_speed = std::sqrt(results.kT / results.mass);
   const double speed_bin =
       settings.speed_range * thermal_speed / static_cast<double>(settings.speed_bins);
-  DiskMotion motion(world, ids, cell.lower, cell.upper, speed_bin, settings.speed_bins);
+  DiskMotion motion(world, ids, cell, speed_bin, settings.speed_bins);
   StructureSettings structure_settings;
-  structure_settings.lower = cell.lower;
-  structure_settings.upper = cell.upper;
+  structure_settings.cell = cell;
   structure_settings.sigma = results.sigma;
   structure_settings.rdf_range = settings.rdf_range;
   structure_settings.rdf_bin = settings.rdf_bin;

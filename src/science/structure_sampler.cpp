@@ -19,8 +19,6 @@ constexpr std::size_t kFewestCells = 3;
 // its curvature, a higher order amplifies noise. See docs/science.md.
 constexpr std::size_t kContactFitBins = 6;
 
-double nearest_image(double x, double side) { return x - side * std::round(x / side); }
-
 // The value at x = 0 of the least-squares quadratic through (x[k], y[k]).
 double quadratic_at_zero(std::span<const double> x, std::span<const double> y) {
   // Normal equations M·(a, b, c) = v for y ≈ a + b·x + c·x².
@@ -51,9 +49,7 @@ double quadratic_at_zero(std::span<const double> x, std::span<const double> y) {
 }  // namespace
 
 StructureSampler::StructureSampler(const StructureSettings& settings, std::vector<bool> reference)
-    : settings_(settings),
-      reference_(std::move(reference)),
-      side_(settings.upper - settings.lower) {
+    : settings_(settings), reference_(std::move(reference)), side_(settings.cell.period()) {
   reference_count_ =
       static_cast<std::size_t>(std::count(reference_.begin(), reference_.end(), true));
   range_ = std::min(settings.rdf_range * settings.sigma, 0.5 * std::min(side_.x, side_.y));
@@ -82,8 +78,7 @@ StructureSampler::StructureSampler(const StructureSettings& settings, std::vecto
 }
 
 void StructureSampler::visit_pair(std::size_t i, std::size_t j, Vec2 position_i, Vec2 position_j) {
-  const Vec2 d{nearest_image(position_j.x - position_i.x, side_.x),
-               nearest_image(position_j.y - position_i.y, side_.y)};
+  const Vec2 d = settings_.cell.minimum_image(position_j - position_i);
   const double r2 = dot(d, d);
   if (r2 >= range2_ && r2 >= psi6_cutoff2_) return;
   if (r2 < psi6_cutoff2_ && r2 > 0.0) {
@@ -119,7 +114,7 @@ void StructureSampler::sample(std::span<const Vec2> positions) {
     const double cells_per_x = static_cast<double>(cells_x_) / side_.x;
     const double cells_per_y = static_cast<double>(cells_y_) / side_.y;
     for (std::size_t i = n; i-- > 0;) {
-      const Vec2 p = positions[i] - settings_.lower;
+      const Vec2 p = positions[i] - settings_.cell.lower();
       // Positions lie in [0, side) up to a rounding; clamp so a rounding cannot index outside.
       const auto cx =
           std::min(cells_x_ - 1, static_cast<std::size_t>(std::max(0.0, p.x * cells_per_x)));

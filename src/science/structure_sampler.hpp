@@ -9,13 +9,13 @@
 #include <span>
 #include <vector>
 
+#include "carom/geometry.hpp"
 #include "carom/vec2.hpp"
 
 namespace carom::science {
 
 struct StructureSettings {
-  Vec2 lower;
-  Vec2 upper;
+  PeriodicCell cell;
   double sigma = 1.0;        // reference diameter: g(r) starts here
   double rdf_range = 5.0;    // in σ; clipped to half the cell's shorter side
   double rdf_bin = 0.02;     // in σ

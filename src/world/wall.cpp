@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "carom/geometry.hpp"
+
 namespace carom::detail {
 
 Wall make_segment_wall(const Segment& segment) {
@@ -19,12 +21,7 @@ Wall make_arc_wall(const char* function, const Arc& arc) {
 }
 
 Vec2 nearest_point(const Wall& wall, Vec2 p) {
-  if (wall.is_arc) return wall.frame.nearest(p);
-  const Vec2 along = wall.segment.b - wall.segment.a;
-  const double length_sq = length_squared(along);
-  if (length_sq == 0.0) return wall.segment.a;
-  const double fraction = std::clamp(dot(p - wall.segment.a, along) / length_sq, 0.0, 1.0);
-  return wall.segment.a + along * fraction;
+  return wall.is_arc ? wall.frame.nearest(p) : carom::nearest_point(wall.segment, p);
 }
 
 bool inside_arc(const Wall& wall, Vec2 p) {

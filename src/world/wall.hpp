@@ -2,9 +2,9 @@
 // engine asks of it.
 #pragma once
 
-#include "core/arc_frame.hpp"
 #include "carom/shapes.hpp"
 #include "carom/sweep.hpp"
+#include "core/arc_frame.hpp"
 
 namespace carom::detail {
 

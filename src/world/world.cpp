@@ -70,17 +70,6 @@ std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   return slot;
 }
 
-Vec2 World::Impl::wrap_into_cell(Vec2 p) const {
-  if (def.boundary != Boundary::periodic) return p;
-  const Vec2 size = def.upper - def.lower;
-  Vec2 q{p.x - size.x * std::floor((p.x - def.lower.x) / size.x),
-         p.y - size.y * std::floor((p.y - def.lower.y) / size.y)};
-  // Rounding can land exactly on the upper edge; the cell is half-open.
-  if (q.x >= def.upper.x) q.x = def.lower.x;
-  if (q.y >= def.upper.y) q.y = def.lower.y;
-  return q;
-}
-
 std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) const {
   if (def.boundary == Boundary::box) {
     if (p.x - r < def.lower.x || p.x + r > def.upper.x || p.y - r < def.lower.y ||
@@ -136,8 +125,7 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
     }
   }
   impl_->def = def;
-  impl_->period = def.upper - def.lower;
-  impl_->half_period = impl_->period * 0.5;
+  impl_->periodic_cell = PeriodicCell(def.lower, def.upper);
   if (def.boundary == Boundary::box) {
     add_box(def.lower, def.upper);
     impl_->boundary_walls = 4;
@@ -290,6 +278,18 @@ WallId World::add_box(Vec2 lower, Vec2 upper) {
 }
 
 std::size_t World::wall_count() const noexcept { return impl_->walls.size(); }
+
+std::variant<Segment, Arc> World::wall(WallId id) const {
+  if (id >= impl_->walls.size()) {
+    refuse("World::wall", "id", std::to_string(id),
+           "must be below wall_count() = " + std::to_string(impl_->walls.size()));
+  }
+  const detail::Wall& wall = impl_->walls[id];
+  if (wall.is_arc) return wall.arc;
+  return wall.segment;
+}
+
+const WorldDef& World::def() const noexcept { return impl_->def; }
 
 double World::step(double dt) {
   detail::require_non_negative("World::step", "dt", dt);
@@ -476,7 +476,8 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
     const double reach = radius + radius_of(j);
     for (int kx = -images; kx <= images; ++kx) {
       for (int ky = -images; ky <= images; ++ky) {
-        const Vec2 other = nearest + Vec2{kx * period.x, ky * period.y};
+        const Vec2 other =
+            nearest + Vec2{kx * periodic_cell.period().x, ky * periodic_cell.period().y};
         const Impact hit = sweep_ball_ball(moving, move, {other, radius_of(j)});
         keep_first(hit, other - hit.normal * reach);
       }

@@ -7,14 +7,14 @@
 #include <string>
 #include <type_traits>
 
-#include "core/bowl_bounce.hpp"
 #include "carom/error.hpp"
 #include "cell_exit.hpp"
-#include "core/circle_crossing.hpp"
 #include "contact_pace.hpp"
+#include "core/bowl_bounce.hpp"
+#include "core/circle_crossing.hpp"
+#include "core/validate.hpp"
 #include "pair_batch.hpp"
 #include "permute.hpp"
-#include "core/validate.hpp"
 #include "world_impl.hpp"
 
 // GCC and clang both spell it this way; on a lambda it goes after the parameter list.
@@ -644,7 +644,8 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::solve_named(const detail::SlotQuery
         for (int kx = -1; kx <= 1; ++kx) {
           for (int ky = -1; ky <= 1; ++ky) {
             if (batch.count + 1 > detail::PairBatch::kCapacity) solve_batch();
-            batch.push(nearest + Vec2{kx * period.x, ky * period.y}, pair.u, reach, other);
+            batch.push(nearest + Vec2{kx * periodic_cell.period().x, ky * periodic_cell.period().y},
+                       pair.u, reach, other);
           }
         }
       }

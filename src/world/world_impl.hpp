@@ -13,6 +13,7 @@
 
 #include "ball_slot.hpp"
 #include "carom/bounce.hpp"  // kImmovable
+#include "carom/geometry.hpp"
 #include "carom/world.hpp"
 #include "event_queue.hpp"
 #include "grid.hpp"
@@ -79,8 +80,7 @@ struct World::Impl {
   std::size_t live_count = 0;
   std::vector<detail::Wall> walls;
   std::uint32_t boundary_walls = 0;  // the box boundary's four walls come first
-  Vec2 period;                       // upper − lower (periodic worlds)
-  Vec2 half_period;                  // half of it
+  PeriodicCell periodic_cell;        // the boundary of a periodic world
   double largest_radius = 0.0;       // of every ball ever added (never lowered: cells stay valid)
 
   detail::Grid grid;
@@ -136,21 +136,11 @@ struct World::Impl {
   }
   // The shortest of the periodic images of d (d itself in a world that does not wrap).
   [[nodiscard]] Vec2 minimum_image(Vec2 d) const {
-    if (def.boundary != Boundary::periodic) return d;
-    // Differences are between positions inside the cell, so one period at most is ever needed.
-    if (d.x > half_period.x) {
-      d.x -= period.x;
-    } else if (d.x < -half_period.x) {
-      d.x += period.x;
-    }
-    if (d.y > half_period.y) {
-      d.y -= period.y;
-    } else if (d.y < -half_period.y) {
-      d.y += period.y;
-    }
-    return d;
+    return def.boundary == Boundary::periodic ? periodic_cell.minimum_image(d) : d;
   }
-  [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const;
+  [[nodiscard]] Vec2 wrap_into_cell(Vec2 p) const {
+    return def.boundary == Boundary::periodic ? periodic_cell.wrap(p) : p;
+  }
   // nearest_free's sweep of ball `slot` from `from` to `end` (world.cpp).
   [[nodiscard]] detail::DragStop sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end) const;
   // The balls a drag from a to b might touch, from the grid (world.cpp); nothing where a scan of

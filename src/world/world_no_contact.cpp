@@ -45,7 +45,8 @@ bool World::Impl::no_contact_ever() const {
     // long), so only two cases are proved: no relative motion at all, and relative motion along
     // one axis with the minimum-image gap across that axis wider than the reach (plus a margin
     // far above the rounding that re-wrapping positions can accumulate).
-    const double margin = kApartSlack * std::max(period.x, period.y);
+    const double margin =
+        kApartSlack * std::max(periodic_cell.period().x, periodic_cell.period().y);
     for (std::uint32_t i = 0; i < balls.size(); ++i) {
       if (!balls[i].alive()) continue;
       const Vec2 pi = position_at(i, time);

@@ -14,8 +14,8 @@
 
 #include "atomic_write.hpp"
 #include "carom/error.hpp"
-#include "save_format.hpp"
 #include "core/validate.hpp"
+#include "save_format.hpp"
 #include "world_impl.hpp"
 
 namespace carom {
@@ -240,8 +240,7 @@ void World::Impl::load_payload(ByteReader& in) {
   if (!(def.cell_size >= 0.0 && std::isfinite(def.cell_size))) {
     in.inconsistent("def.cell_size", number_text(def.cell_size), "must be finite, >= 0");
   }
-  period = def.upper - def.lower;
-  half_period = period * 0.5;
+  periodic_cell = PeriodicCell(def.lower, def.upper);
 
   time = in.f64("time");
   if (!std::isfinite(time)) in.inconsistent("time", number_text(time), "must be finite");

@@ -99,19 +99,17 @@ TEST(Structure, GOfRTendsToOneAndItsContactValueToThePressureRoute) {
 TEST(Arguments, AreChecked) {
   const science::HardDiskLayout layout = science::hard_disk_layout(16, 0.3);
   World world = science::make_hard_disk_world(layout, 1);
-  const PeriodicCell cell{{0.0, 0.0}, {layout.side, layout.side}};
   GasMonitorSettings one_block;
   one_block.blocks = 1;
-  EXPECT_THROW((void)measure_gas(world, cell, 1.0, one_block), InvalidArgument);
-  EXPECT_THROW((void)measure_gas(world, cell, 0.0), InvalidArgument);
-  EXPECT_THROW((void)measure_gas(world, cell, std::numeric_limits<double>::infinity()),
-               InvalidArgument);
+  EXPECT_THROW((void)measure_gas(world, 1.0, one_block), InvalidArgument);
+  EXPECT_THROW((void)measure_gas(world, 0.0), InvalidArgument);
+  EXPECT_THROW((void)measure_gas(world, std::numeric_limits<double>::infinity()), InvalidArgument);
   GasMonitorSettings one_run;
   one_run.runs_per_block = 1;
-  EXPECT_THROW((void)measure_gas(world, cell, 1.0, one_run), InvalidArgument);
+  EXPECT_THROW((void)measure_gas(world, 1.0, one_run), InvalidArgument);
   World walled(WorldDef{});
   walled.add_ball(BallDef{});
-  EXPECT_THROW((void)measure_gas(walled, cell, 1.0), InvalidArgument);
+  EXPECT_THROW((void)measure_gas(walled, 1.0), InvalidArgument);
 }
 
 TEST(BlockAverage, MeanAndStandardError) {

@@ -21,8 +21,7 @@ GasResults run_gas(const GasRunSpec& spec) {
   const double rate = equilibrate(world, equilibration);
   GasMonitorSettings settings = spec.settings;
   settings.structure_interval = 2.0 * spec.structure_every / rate;
-  return measure_gas(world, PeriodicCell{{0.0, 0.0}, {layout.side, layout.side}},
-                     2.0 * spec.collisions_per_disk / rate, settings);
+  return measure_gas(world, 2.0 * spec.collisions_per_disk / rate, settings);
 }
 
 bool long_tests_enabled() {

@@ -16,6 +16,7 @@
 #include <random>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "carom/error.hpp"
@@ -236,6 +237,34 @@ TEST(WorldApi, BadCallNumbersThrowNamingTheArgument) {
   expect_invalid([&] { world.set_velocity(id, {kNaN, 0.0}); }, "velocity");
   expect_invalid([&] { static_cast<void>(world.set_position(id, {0.0, kNaN})); }, "position");
   EXPECT_EQ(world.time(), 1.0);
+}
+
+TEST(WorldApi, TheDefAndTheWallsAreReadBackAsGiven) {
+  WorldDef def;
+  def.boundary = Boundary::box;
+  def.lower = {-1.0, -2.0};
+  def.upper = {30.0, 20.0};
+  def.restitution = 0.75;
+  def.collapse_time = 0.125;
+  World world(def);
+  EXPECT_EQ(world.def().boundary, Boundary::box);
+  EXPECT_EQ(world.def().upper, def.upper);
+  EXPECT_EQ(world.def().restitution, 0.75);
+  EXPECT_EQ(world.def().collapse_time, 0.125);
+  const Segment segment{{2.0, 3.0}, {5.0, 7.0}};
+  const Arc arc{{15.0, 10.0}, 3.0, 0.5, 2.5};
+  const WallId s = world.add_segment(segment);
+  const WallId a = world.add_arc(arc);
+  ASSERT_EQ(world.wall_count(), 6U);
+  // The box's bottom wall comes first, from lower-left to lower-right.
+  const auto bottom = std::get<Segment>(world.wall(0));
+  EXPECT_EQ(bottom.a, def.lower);
+  EXPECT_EQ(bottom.b, (Vec2{30.0, -2.0}));
+  EXPECT_EQ(std::get<Segment>(world.wall(s)).b, segment.b);
+  const Arc back = std::get<Arc>(world.wall(a));
+  EXPECT_EQ(back.center, arc.center);
+  EXPECT_EQ(back.end_angle, arc.end_angle);
+  EXPECT_THROW((void)world.wall(6), InvalidArgument);
 }
 
 TEST(WorldApi, BadWorldDefThrows) {

@@ -3,44 +3,19 @@
 #include <algorithm>
 #include <cstddef>
 #include <utility>
+#include <variant>
 
 #include "carom/error.hpp"
 
 namespace carom::web {
 
-namespace {
-
-WorldDef def_of(const SceneSettings& settings) {
-  return {.boundary = settings.boundary,
-          .lower = settings.lower,
-          .upper = settings.upper,
-          .restitution = settings.restitution,
-          .collapse_time = settings.collapse_time,
-          .cell_size = settings.cell_size};
-}
-
-}  // namespace
-
-DrawnWorld::DrawnWorld(const WorldDef& def)
-    : def_(def), scene_world_{World(def), {}, {}, {}, {}, 0.0} {}
+DrawnWorld::DrawnWorld(const WorldDef& def) : scene_world_{World(def), {}, {}, {}, {}, 0.0} {}
 
 DrawnWorld::DrawnWorld(SceneWorld scene_world)
-    : def_(def_of(scene_world.scene.world)),
-      scene_world_(std::move(scene_world)),
+    : scene_world_(std::move(scene_world)),
       pockets_(scene_world_.scene.pockets),
       held_velocity_(scene_world_.balls.size()) {
   const Scene& scene = scene_world_.scene;
-  segments_ = scene.segments;
-  // The same walls, in the same order, as carom::make_world adds them.
-  for (const ScenePolyline& polyline : scene.polylines) {
-    for (std::size_t i = 0; i + 1 < polyline.points.size(); ++i) {
-      segments_.push_back({polyline.points[i], polyline.points[i + 1]});
-    }
-    if (polyline.closed && polyline.points.size() > 2) {
-      segments_.push_back({polyline.points.back(), polyline.points.front()});
-    }
-  }
-  arcs_ = scene.arcs;
   colors_.reserve(scene.balls.size());
   for (const SceneBall& ball : scene.balls) colors_.push_back(ball.color.value_or(""));
 }
@@ -59,12 +34,35 @@ int DrawnWorld::add_ball(Vec2 position, Vec2 velocity, double radius, double mas
 
 void DrawnWorld::add_segment(const Segment& segment) {
   static_cast<void>(scene_world_.world.add_segment(segment));
-  segments_.push_back(segment);
 }
 
-void DrawnWorld::add_arc(const Arc& arc) {
-  static_cast<void>(scene_world_.world.add_arc(arc));
-  arcs_.push_back(arc);
+void DrawnWorld::add_arc(const Arc& arc) { static_cast<void>(scene_world_.world.add_arc(arc)); }
+
+std::vector<Segment> DrawnWorld::segments() const {
+  std::vector<Segment> segments;
+  const World& world = scene_world_.world;
+  for (WallId id = first_own_wall(); id < world.wall_count(); ++id) {
+    const std::variant<Segment, Arc> shape = world.wall(id);
+    if (const auto* segment = std::get_if<Segment>(&shape); segment != nullptr) {
+      segments.push_back(*segment);
+    }
+  }
+  return segments;
+}
+
+std::vector<Arc> DrawnWorld::arcs() const {
+  std::vector<Arc> arcs;
+  const World& world = scene_world_.world;
+  for (WallId id = first_own_wall(); id < world.wall_count(); ++id) {
+    const std::variant<Segment, Arc> shape = world.wall(id);
+    if (const auto* arc = std::get_if<Arc>(&shape); arc != nullptr) arcs.push_back(*arc);
+  }
+  return arcs;
+}
+
+WallId DrawnWorld::first_own_wall() const {
+  // A box's four walls come first; the page draws the box from the world's def instead.
+  return scene_world_.world.def().boundary == Boundary::box ? 4 : 0;
 }
 
 double DrawnWorld::step(double dt) { return step_scene(scene_world_, dt); }

@@ -1,6 +1,6 @@
-// carom web: a carom::World together with what a page needs to draw and handle it: the walls it
-// was given (the World keeps no list of their shapes), its balls in the order they were added,
-// and a flat buffer of their positions that JavaScript reads without a call per ball.
+// carom web: a carom::World together with what a page needs to draw and handle it: its balls in
+// the order they were added, and a flat buffer of their positions that JavaScript reads without a
+// call per ball.
 //
 // Pages build one shape by shape (add_ball, add_segment, add_arc) and fill it with generated
 // balls (lattice_filling.hpp), or load a scene file (scene_loading.hpp): then the world is the
@@ -61,24 +61,24 @@ class DrawnWorld {
   [[nodiscard]] const std::vector<std::string>& colors() const noexcept { return colors_; }
   [[nodiscard]] const std::vector<ScenePocket>& pockets() const noexcept { return pockets_; }
   [[nodiscard]] Vec2 position(int index) const;
-  [[nodiscard]] const std::vector<Segment>& segments() const noexcept { return segments_; }
-  [[nodiscard]] const std::vector<Arc>& arcs() const noexcept { return arcs_; }
-  [[nodiscard]] const WorldDef& def() const noexcept { return def_; }
+  // The walls added (the segments, then polylines' segments, and arcs of a scene), a box's
+  // boundary left out.
+  [[nodiscard]] std::vector<Segment> segments() const;
+  [[nodiscard]] std::vector<Arc> arcs() const;
+  [[nodiscard]] const WorldDef& def() const noexcept { return scene_world_.world.def(); }
   [[nodiscard]] const World& world() const noexcept { return scene_world_.world; }
   // Contacts resolved by the last step.
   [[nodiscard]] int last_step_contacts() const;
 
  private:
   [[nodiscard]] BallId id(int index) const;
+  [[nodiscard]] WallId first_own_wall() const;
   [[nodiscard]] bool present(BallId ball) const;
 
-  WorldDef def_;
   // The world and its balls by index (scene_world_.balls; null once potted), pockets included.
   SceneWorld scene_world_;
   std::vector<std::string> colors_;
   std::vector<ScenePocket> pockets_;
-  std::vector<Segment> segments_;
-  std::vector<Arc> arcs_;
   std::vector<std::optional<Vec2>> held_velocity_;  // set while a ball is held
   std::vector<float> snapshot_;
 };

@@ -19,7 +19,7 @@ struct InfoOptions {
   bool json = false;
 };
 
-std::string boundary_text(const SceneSettings& w) {
+std::string boundary_text(const WorldDef& w) {
   if (w.boundary == Boundary::open) return "open";
   const std::string range = "[" + readable(w.lower.x) + ", " + readable(w.upper.x) + "] x [" +
                             readable(w.lower.y) + ", " + readable(w.upper.y) + "]";

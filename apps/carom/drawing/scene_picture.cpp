@@ -130,7 +130,7 @@ ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style
   picture.view = style.view;
   picture.time_unit = scene.units.time;
 
-  const SceneSettings& settings = scene.world;
+  const WorldDef& settings = scene.world;
   if (settings.boundary == Boundary::box) {
     picture.boundary.push_back(
         {box_outline(settings.lower, settings.upper), kWallColour, kBoundaryWidth, false});

@@ -7,7 +7,7 @@ namespace carom::cli {
 
 TrailRecorder::TrailRecorder(const SceneWorld& scene_world, double seconds)
     : seconds_(seconds), points_(scene_world.scene.balls.size()) {
-  const SceneSettings& settings = scene_world.scene.world;
+  const WorldDef& settings = scene_world.scene.world;
   if (settings.boundary == Boundary::periodic) period_ = settings.upper - settings.lower;
 }
 

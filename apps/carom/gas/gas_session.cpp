@@ -27,7 +27,6 @@ GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
   }
   const science::GasMonitorSettings settings = science::gas_monitor_settings(
       spec.blocks, spec.collisions_per_disk, outcome.equilibration_rate);
-  const science::PeriodicCell cell{{0.0, 0.0}, {spec.layout.side, spec.layout.side}};
   const double duration = 2.0 * spec.collisions_per_disk / outcome.equilibration_rate;
   const double start_time = world.time();
   stop_world_on_signals(world, [&](const RunStatus& status) {
@@ -35,7 +34,7 @@ GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
       progress((equilibration + measured * (status.time - start_time) / duration) / total);
   });
   const auto start = std::chrono::steady_clock::now();
-  outcome.results = science::measure_gas(world, cell, duration, settings);
+  outcome.results = science::measure_gas(world, duration, settings);
   outcome.wall_seconds = seconds_since(start);
   outcome.interrupted = outcome.results.interrupted;
   return outcome;

@@ -88,7 +88,7 @@ void FrameWriter::write_frame(const SceneWorld& built) {
     // Extended XYZ as OVITO and ASE read it: 3D columns with z = 0, the box or cell as Lattice
     // with its Origin, periodicity per axis.
     buffer_ += std::to_string(live) + "\n";
-    const SceneSettings& w = scene_->world;
+    const WorldDef& w = scene_->world;
     if (w.boundary != Boundary::open) {
       const Vec2 size = w.upper - w.lower;
       buffer_ += "Lattice=\"" + exact_number(size.x) + " 0 0 0 " + exact_number(size.y) +

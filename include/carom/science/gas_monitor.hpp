@@ -34,11 +34,6 @@
 namespace carom::science {
 
 // The periodic cell the world was made with (World does not report it).
-struct PeriodicCell {
-  Vec2 lower;
-  Vec2 upper;
-};
-
 struct GasMonitorSettings {
   std::size_t blocks = 16;  // at least 2
   // Each block is advanced in this many equal runs of World::run_until (at least 2). After each
@@ -137,12 +132,12 @@ inline constexpr double kLeastCollisionsPerDiskPerRun = 1.0;
   return settings;
 }
 
-// Runs world for `duration` more time units and measures. The world must be periodic with the
-// given cell, hold no walls, at least two balls, all movable; duration > 0. Throws
+// Runs world for `duration` more time units and measures. The world must be periodic (its cell is
+// world.def()'s), hold no walls, at least two balls, all movable; duration > 0. Throws
 // carom::InvalidArgument otherwise. Blocks and runs are equal in time, so every average is a
 // time average (the number of collisions per block varies a little). A run stopped from outside
 // ends the measurement there (GasResults::interrupted).
-[[nodiscard]] GasResults measure_gas(World& world, const PeriodicCell& cell, double duration,
+[[nodiscard]] GasResults measure_gas(World& world, double duration,
                                      const GasMonitorSettings& settings = {});
 
 // The time a production run of the given collisions per disk takes, near enough: a world first

@@ -15,8 +15,7 @@ int main() {
   world.add_ball({.position = {7.0, 2.5}, .velocity = {-0.7, 0.9}, .radius = 1.0});
   world.add_ball({.position = {3.0, 7.0}, .velocity = {0.4, -1.1}, .radius = 1.0});
   world.add_ball({.position = {7.5, 7.5}, .velocity = {-0.7, -0.1}, .radius = 1.0});
-  const carom::science::GasResults gas =
-      carom::science::measure_gas(world, {def.lower, def.upper}, 200.0, {.blocks = 4});
+  const carom::science::GasResults gas = carom::science::measure_gas(world, 200.0, {.blocks = 4});
   std::printf("%llu collisions, Z = %g +- %g\n", static_cast<unsigned long long>(gas.collisions),
               gas.z.mean, gas.z.error);
   return gas.collisions > 0 && gas.z.mean > 1.0 && gas.z.blocks == 4 ? 0 : 1;

@@ -8,25 +8,13 @@
 #include <version>
 
 #include "carom/error.hpp"
+#include "carom/number_text.hpp"
 
 namespace carom::detail {
 namespace {
 
 // Shortest text that reads back to the same double, so a message shows the exact value.
-std::string to_text(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char buffer[32];
-#if defined(__cpp_lib_to_chars)
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return {buffer, result.ptr};
-#else
-  // The libc++ of Debian's emscripten 3.1.6 (the wasm preset) cannot print doubles with
-  // to_chars; 17 significant digits also read back exactly, if not always the shortest way.
-  const int length = std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return {buffer, static_cast<std::size_t>(length)};
-#endif
-}
+std::string to_text(double value) { return carom::number_text(value); }
 
 std::string to_text(Vec2 value) {
   // Appended piece by piece: g++ 12 at -O3 warns falsely (-Wrestrict) on "(" + std::string.
@@ -45,7 +33,6 @@ std::string to_text(Vec2 value) {
 
 }  // namespace
 
-std::string number_text(double value) { return to_text(value); }
 std::string vector_text(Vec2 value) { return to_text(value); }
 
 void require_finite(const char* function, const char* argument, double value) {

@@ -4,12 +4,12 @@
 
 #include <string>
 
+#include "carom/number_text.hpp"
 #include "carom/vec2.hpp"
 
 namespace carom::detail {
 
-// The shortest text that reads back to the same double ("nan", "inf" and "-inf" included).
-[[nodiscard]] std::string number_text(double value);
+// "(x, y)", each as carom::number_text writes it.
 [[nodiscard]] std::string vector_text(Vec2 value);
 
 void require_finite(const char* function, const char* argument, double value);

@@ -35,17 +35,4 @@ double distance_to_wall(const SceneWall& wall, Vec2 p) {
   return std::visit([p](const auto& shape) { return carom::distance(shape, p); }, wall.shape);
 }
 
-std::string number_text(double value) {
-  std::array<char, 32> buffer{};
-#if defined(__cpp_lib_to_chars)
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return {buffer.data(), result.ptr};
-#else
-  // The libc++ of Debian's emscripten 3.1.6 (the wasm preset) cannot print doubles with
-  // to_chars; 17 significant digits also read back exactly, if not always the shortest way.
-  const int length = std::snprintf(buffer.data(), buffer.size(), "%.17g", value);
-  return {buffer.data(), static_cast<std::size_t>(length)};
-#endif
-}
-
 }  // namespace carom::scene_detail

@@ -6,6 +6,7 @@
 #include <variant>
 #include <vector>
 
+#include "carom/number_text.hpp"
 #include "carom/scene.hpp"
 #include "json_walk.hpp"
 
@@ -21,8 +22,5 @@ struct SceneWall {
 [[nodiscard]] std::vector<SceneWall> scene_walls(const Scene& scene);
 
 [[nodiscard]] double distance_to_wall(const SceneWall& wall, Vec2 p);
-
-// The shortest text that reads back to the same double.
-[[nodiscard]] std::string number_text(double value);
 
 }  // namespace carom::scene_detail

@@ -13,7 +13,7 @@
 namespace carom {
 namespace {
 
-using scene_detail::number_text;
+using carom::number_text;
 
 std::string num(double value) {
   if (value == kImmovable) return "\"immovable\"";

@@ -85,7 +85,7 @@ World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed) {
   def.lower = {0.0, 0.0};
   def.upper = {layout.side, layout.side};
   World world(def);
-  world.reserve(layout.n);
+  world.reserve(static_cast<std::size_t>(layout.n));
   std::mt19937_64 random(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (std::uint64_t i = 0; i < layout.n; ++i) {

@@ -17,7 +17,7 @@ using detail::BallSlot;
 
 namespace {
 
-std::string number(double value) { return detail::number_text(value); }
+std::string number(double value) { return carom::number_text(value); }
 
 [[noreturn]] void refuse(const char* function, const char* argument, const std::string& value,
                          const std::string& requirement) {

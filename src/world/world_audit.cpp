@@ -69,7 +69,7 @@ Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
   const double slack = tolerance * radius + position_rounding(p, w.balls[i].velocity, w.time);
   if (gap < radius - slack) {
     return ball_name(w.handle_of[i]) + " overlaps wall " + std::to_string(k) + " by " +
-           detail::number_text(radius - gap);
+           carom::number_text(radius - gap);
   }
   return std::nullopt;
 }
@@ -89,7 +89,7 @@ Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
     const std::uint32_t low = std::min(w.handle_of[i], w.handle_of[j]);
     const std::uint32_t high = std::max(w.handle_of[i], w.handle_of[j]);
     return "balls " + std::to_string(low) + " and " + std::to_string(high) + " overlap by " +
-           detail::number_text(reach - gap);
+           carom::number_text(reach - gap);
   }
   return std::nullopt;
 }

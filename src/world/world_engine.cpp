@@ -822,7 +822,7 @@ void World::Impl::refuse_endless(const char* function, std::uint64_t count,
   const double time_step = std::nextafter(time, kInfinity) - time;
   if (moved_measurably(last, time_step)) refuse_stalled(function, last);
   refuse_never_ending(
-      function, std::to_string(count) + " events at t = " + detail::number_text(time),
+      function, std::to_string(count) + " events at t = " + carom::number_text(time),
       "their contacts come at one instant (or a rounding apart) without end", last,
       "has balls jammed: balls held by touching balls and walls on every side (a closed row of "
       "exactly touching balls around the periodic cell or from wall to wall, a ball wedged in a "
@@ -836,7 +836,7 @@ void World::Impl::refuse_piling_up(const char* function, const Event& last) cons
       "run's contact count took under 3/4 of the time of the one before, 8 times in a row)";
   refuse_never_ending(
       function,
-      "t = " + detail::number_text(time) + " (ball " + std::to_string(handle_of[last.owner]) + ")",
+      "t = " + carom::number_text(time) + " (ball " + std::to_string(handle_of[last.owner]) + ")",
       how, last, "has contacts piling up: " + how + " (docs/world.md, \"Known limits\")");
 }
 
@@ -869,7 +869,7 @@ void World::Impl::refuse_never_ending(const char* function, const std::string& w
 void World::Impl::refuse_stalled(const char* function, const Event& last) const {
   throw InvalidArgument(
       function, "world",
-      "t = " + detail::number_text(time) + " (ball " + std::to_string(handle_of[last.owner]) + ")",
+      "t = " + carom::number_text(time) + " (ball " + std::to_string(handle_of[last.owner]) + ")",
       "has stalled: at this time the step between neighbouring doubles moves a ball measurably "
       "(more than 2^-10 of its radius), so contacts would be resolved off their places, and "
       "events may no longer advance time at all; continue the motion in a new world, from time "

@@ -214,7 +214,7 @@ void World::save(const std::filesystem::path& path) const {
 // ---- reading ---------------------------------------------------------------------------------
 
 void World::Impl::load_payload(ByteReader& in) {
-  using detail::number_text;
+  using carom::number_text;
   using detail::vector_text;
   const std::uint8_t boundary = in.u8("def.boundary");
   if (boundary > static_cast<std::uint8_t>(Boundary::periodic)) {
@@ -405,7 +405,7 @@ void World::Impl::load_grid(ByteReader& in) {
       static_cast<double>(nx) * static_cast<double>(ny) > most_cells) {
     in.inconsistent("grid", std::to_string(nx) + "x" + std::to_string(ny),
                     "a grid has finite positive cells (or none if no ball) and at most " +
-                        detail::number_text(most_cells) + " of them");
+                        carom::number_text(most_cells) + " of them");
   }
   // The engine gives the hysteresis part of the room a cell has beyond the largest diameter, at
   // most a tenth of the cell.

@@ -258,18 +258,18 @@ std::string plan_text(const RunProgress& p) {
   std::string text;
   switch (static_cast<Mode>(p.mode)) {
     case Mode::until:
-      text = "--until " + exact_number(p.until);
+      text = "--until " + number_text(p.until);
       break;
     case Mode::steps:
-      text = "--steps " + std::to_string(p.steps) + " --dt " + exact_number(p.dt);
+      text = "--steps " + std::to_string(p.steps) + " --dt " + number_text(p.dt);
       break;
     case Mode::collisions:
       text = "--collisions " + std::to_string(p.collisions);
-      if (p.has_time_limit) text += " --time-limit " + exact_number(p.time_limit);
+      if (p.has_time_limit) text += " --time-limit " + number_text(p.time_limit);
       break;
   }
-  if (p.every > 0.0) text += " --every " + exact_number(p.every);
-  if (p.checkpoint_every > 0.0) text += " --checkpoint-every " + exact_number(p.checkpoint_every);
+  if (p.every > 0.0) text += " --every " + number_text(p.every);
+  if (p.checkpoint_every > 0.0) text += " --checkpoint-every " + number_text(p.checkpoint_every);
   return text;
 }
 

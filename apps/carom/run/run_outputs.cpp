@@ -41,12 +41,6 @@ std::string csv_field(const std::string& text) {
 
 }  // namespace
 
-std::string exact_number(double value) {
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return {buffer.data(), result.ptr};
-}
-
 std::optional<FrameFormat> frame_format_of(const std::string& path) {
   const std::string extension = lower_extension(path);
   if (extension == ".csv") return FrameFormat::csv;
@@ -91,13 +85,13 @@ void FrameWriter::write_frame(const SceneWorld& built) {
     const WorldDef& w = scene_->world;
     if (w.boundary != Boundary::open) {
       const Vec2 size = w.upper - w.lower;
-      buffer_ += "Lattice=\"" + exact_number(size.x) + " 0 0 0 " + exact_number(size.y) +
-                 " 0 0 0 1\" Origin=\"" + exact_number(w.lower.x) + " " + exact_number(w.lower.y) +
+      buffer_ += "Lattice=\"" + number_text(size.x) + " 0 0 0 " + number_text(size.y) +
+                 " 0 0 0 1\" Origin=\"" + number_text(w.lower.x) + " " + number_text(w.lower.y) +
                  " -0.5\" ";
       buffer_ += w.boundary == Boundary::periodic ? "pbc=\"T T F\" " : "pbc=\"F F F\" ";
     }
     buffer_ +=
-        "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:index:I:1 Time=" + exact_number(time) +
+        "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:index:I:1 Time=" + number_text(time) +
         "\n";
   }
   for (std::size_t i = 0; i < built.balls.size(); ++i) {
@@ -107,13 +101,13 @@ void FrameWriter::write_frame(const SceneWorld& built) {
     const Vec2 v = built.world.velocity(id);
     const SceneBall& ball = built.scene.balls[i];
     if (format_ == FrameFormat::csv) {
-      buffer_ += exact_number(time) + "," + std::to_string(i) + "," +
-                 csv_field(ball.name.value_or("")) + "," + exact_number(p.x) + "," +
-                 exact_number(p.y) + "," + exact_number(v.x) + "," + exact_number(v.y) + "," +
-                 exact_number(ball.radius) + "\n";
+      buffer_ += number_text(time) + "," + std::to_string(i) + "," +
+                 csv_field(ball.name.value_or("")) + "," + number_text(p.x) + "," +
+                 number_text(p.y) + "," + number_text(v.x) + "," + number_text(v.y) + "," +
+                 number_text(ball.radius) + "\n";
     } else {
-      buffer_ += species(ball) + " " + exact_number(p.x) + " " + exact_number(p.y) + " 0 " +
-                 exact_number(v.x) + " " + exact_number(v.y) + " 0 " + exact_number(ball.radius) +
+      buffer_ += species(ball) + " " + number_text(p.x) + " " + number_text(p.y) + " 0 " +
+                 number_text(v.x) + " " + number_text(v.y) + " 0 " + number_text(ball.radius) +
                  " " + std::to_string(i) + "\n";
     }
   }

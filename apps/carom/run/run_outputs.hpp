@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "carom/number_text.hpp"
 #include "carom/scene.hpp"
 #include "system/output_file.hpp"
 
@@ -63,8 +64,5 @@ class EventWriter {
   OutputFile out_;
   std::string buffer_;
 };
-
-// The shortest text that reads back to the same double.
-[[nodiscard]] std::string exact_number(double value);
 
 }  // namespace carom::cli

@@ -124,7 +124,7 @@ inline constexpr double kLeastCollisionsPerDiskPerRun = 1.0;
                                                              double collisions_per_disk,
                                                              double rate) {
   GasMonitorSettings settings;
-  settings.blocks = blocks;
+  settings.blocks = static_cast<std::size_t>(blocks);
   const double per_block = collisions_per_disk / static_cast<double>(blocks);
   settings.runs_per_block = static_cast<std::size_t>(
       std::clamp(std::floor(per_block / kLeastCollisionsPerDiskPerRun), 2.0, kMostRunsPerBlock));

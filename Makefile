@@ -328,7 +328,7 @@ bench-peers: deps
 	build/release/bench/peers/carom_peers report --out docs/peers.md --command "make bench-peers"
 
 # Instructions a collision of the engine on the hard-disk gas, counted by callgrind: the same on
-# every run of the same binary, whatever the host is doing (bench/instructions_per_collision.sh;
+# every run of the same binary, whatever the host is doing (tools/perf/instructions_per_collision.sh;
 # docs/performance.md, twelfth slice). About 15 s a gas of 10⁴ disks, 2 minutes at 10⁵.
 INSTRUCTION_GASES ?= 10000 0.3 10000 0.6
 .PHONY: bench-instructions
@@ -336,13 +336,13 @@ bench-instructions: deps
 	$(MAKE) --no-print-directory deps PACKAGES=valgrind
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_world_gas_probe
-	bench/instructions_per_collision.sh build/release/bench/carom_world_gas_probe $(INSTRUCTION_GASES)
+	tools/perf/instructions_per_collision.sh build/release/tools/perf/carom_world_gas_probe $(INSTRUCTION_GASES)
 
 # The soak test (issue 8; not in make test): 10⁸ collisions of the hard-disk gas at packing 0.6,
-# audited every 10⁶, with energy, momentum and memory checked (bench/world_soak.cpp). Minutes.
+# audited every 10⁶, with energy, momentum and memory checked (tests/soak/world_soak.cpp). Minutes.
 SOAK_ARGS ?= 10000 0.6 1e8 1e6
 .PHONY: soak
 soak: deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_world_soak
-	build/release/bench/carom_world_soak $(SOAK_ARGS)
+	build/release/tests/soak/carom_world_soak $(SOAK_ARGS)

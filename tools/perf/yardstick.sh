@@ -1,16 +1,16 @@
 #!/bin/sh
-# carom's hard-disk gas against the textbook simulator (bench/textbook_gas.cpp: one earliest event
+# carom's hard-disk gas against the textbook simulator (tools/perf/textbook_gas.cpp: one earliest event
 # per ball, an indexed binary heap, cell crossings) on this host, paired on the two cores by
-# bench/paired_runs.sh. The speed goals are stated "on this machine", where the textbook
+# tools/perf/paired_runs.sh. The speed goals are stated "on this machine", where the textbook
 # reaches about 1.0 M collisions/s at 10^4 disks and 0.6 M at 10^5: 2.5 M and 1.5 M are 2.5 times
 # the textbook's rate at both sizes. Hosts differ by half and more in speed (docs/performance.md,
 # eighteenth slice), so the textbook run beside carom's says which kind of host a verdict of
 # `carom bench --goals` came from, and how far the engine is from the goals as the issue's machine
 # would judge them: speed-up = the textbook's ns a collision over carom's.
 #
-# Usage: bench/yardstick.sh TEXTBOOK PROBE [N ETA COLLISIONS_PER_BALL ROUNDS]...
-#   TEXTBOOK: build/release/bench/carom_textbook_gas
-#   PROBE:    build/release/bench/carom_world_gas_probe
+# Usage: tools/perf/yardstick.sh TEXTBOOK PROBE [N ETA COLLISIONS_PER_BALL ROUNDS]...
+#   TEXTBOOK: build/release/tools/perf/carom_textbook_gas
+#   PROBE:    build/release/tools/perf/carom_world_gas_probe
 #   default gases: 10000 0.3 50 16  10000 0.6 50 16  100000 0.3 10 8  100000 0.6 10 8
 set -eu
 

@@ -7,9 +7,9 @@
 # of the ratios of pairs of rounds (below): a change is told from the noise when the quartiles
 # sit on one side of 1.
 #
-# Usage: bench/paired_runs.sh OLD_PROBE NEW_PROBE N ETA COLLISIONS_PER_BALL ROUNDS
-#   e.g. bench/paired_runs.sh /tmp/old/carom_world_gas_probe \
-#          build/release/bench/carom_world_gas_probe 10000 0.3 20 20
+# Usage: tools/perf/paired_runs.sh OLD_PROBE NEW_PROBE N ETA COLLISIONS_PER_BALL ROUNDS
+#   e.g. tools/perf/paired_runs.sh /tmp/old/carom_world_gas_probe \
+#          build/release/tools/perf/carom_world_gas_probe 10000 0.3 20 20
 # Needs two logical CPUs and taskset (util-linux). At 10^5 balls and more the two runs share the
 # last-level cache and the memory bandwidth: each build is slowed by the other, alike by symmetry.
 set -eu

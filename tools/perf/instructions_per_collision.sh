@@ -5,8 +5,8 @@
 # x86-64 with AVX2; it hides AVX-512): a change of the engine's work shows here even where the
 # host's noise hides it in the times (docs/performance.md, twelfth slice).
 #
-# Usage: bench/instructions_per_collision.sh PROBE [N ETA]...
-#   PROBE: build/release/bench/carom_world_gas_probe (a release build of it)
+# Usage: tools/perf/instructions_per_collision.sh PROBE [N ETA]...
+#   PROBE: build/release/tools/perf/carom_world_gas_probe (a release build of it)
 #   N ETA: gases to count (default: 10000 0.3 10000 0.6)
 # Each gas is run twice, with 10 and with 30 collisions a disk after the probe's 2 a disk of
 # equilibration, counting only inside World::run_collisions; the difference over the 20·N

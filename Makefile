@@ -310,7 +310,7 @@ bench-web: wasm $(WEB_NODE_MODULES)
 clean:
 	rm -rf build
 
-# The long validation of the hard-disk measurements (issue 5): runs `carom eos` and `carom gas`
+# The long validation of the hard-disk measurements: runs `carom eos` and `carom gas`
 # for a few minutes and writes docs/validation.md with tables and plots (docs/figures/validation).
 .PHONY: validate
 validate: deps
@@ -318,7 +318,7 @@ validate: deps
 	cmake --build --preset release --target carom_cli
 	tests/science/validate.sh $(CAROM)
 
-# carom beside Box2D 2.4 and Chipmunk 7 on the same scenes (issue 7): every case in a process of
+# carom beside Box2D 2.4 and Chipmunk 7 on the same scenes: every case in a process of
 # its own, a few minutes in all; writes docs/peers.md. A peer that is not installed is left out.
 PACKAGES += libchipmunk-dev
 .PHONY: bench-peers
@@ -328,8 +328,9 @@ bench-peers: deps
 	build/release/bench/peers/carom_peers report --out docs/peers.md --command "make bench-peers"
 
 # Instructions a collision of the engine on the hard-disk gas, counted by callgrind: the same on
-# every run of the same binary, whatever the host is doing (tools/perf/instructions_per_collision.sh;
-# docs/performance.md, twelfth slice). About 15 s a gas of 10⁴ disks, 2 minutes at 10⁵.
+# every run of the same binary, whatever the host is doing (tools/perf/README.md;
+# docs/decisions/0024-judging-speed-on-shared-hosts.md). About 15 s a gas of 10⁴ disks, 2
+# minutes at 10⁵.
 INSTRUCTION_GASES ?= 10000 0.3 10000 0.6
 .PHONY: bench-instructions
 bench-instructions: deps
@@ -338,7 +339,7 @@ bench-instructions: deps
 	cmake --build --preset release --target carom_world_gas_probe
 	tools/perf/instructions_per_collision.sh build/release/tools/perf/carom_world_gas_probe $(INSTRUCTION_GASES)
 
-# The soak test (issue 8; not in make test): 10⁸ collisions of the hard-disk gas at packing 0.6,
+# The soak test (not in make test): 10⁸ collisions of the hard-disk gas at packing 0.6,
 # audited every 10⁶, with energy, momentum and memory checked (tests/soak/world_soak.cpp). Minutes.
 SOAK_ARGS ?= 10000 0.6 1e8 1e6
 .PHONY: soak

@@ -8,7 +8,7 @@
 // - BM_WorldGameDragStep: the same with the player dragging one ball every frame (set_position
 //   with nearest_free, then set_velocity): the cost of a change between steps.
 // - BM_WorldGameWallStep: the same with the player drawing a short wall every frame.
-// The figures and what they mean: docs/performance.md, "World (issue 3)".
+// The figures and what they mean: docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

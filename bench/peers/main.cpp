@@ -1,4 +1,4 @@
-// carom_peers: carom beside Box2D 2.4 and Chipmunk 7 on the same scenes (issue 7).
+// carom_peers: carom beside Box2D 2.4 and Chipmunk 7 on the same scenes.
 //   carom_peers run --engine E [--scene gas|bullets] [--n N] [--packing P] [--steps S] [--seed K]
 //       [--no-checks]
 //       one engine on one scene in this process; prints one line of key=value results

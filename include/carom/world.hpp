@@ -2,7 +2,8 @@
 //
 // Every contact inside a step is found and resolved at the time it really happens, in time order,
 // however fast the balls move: the world is event-driven (each ball moves in a straight line
-// between its contacts; see docs/world.md). What it guarantees:
+// between its contacts; the user guide: docs/world.md, the design: docs/engine.md). What it
+// guarantees:
 // - no missed contact: a pair that would touch while approaching is bounced at that time;
 // - no overlap beyond rounding: balls never pass through each other or through walls;
 // - determinism: the same world and the same calls give bit-identical states and contact lists;
@@ -56,11 +57,11 @@ struct WorldDef {
   double restitution = 1.0;  // for balls whose BallDef leaves it unset
   // Inelastic collapse prevention (the "TC model"): a ball that collided less than this time ago
   // bounces elastically, so that three or more inelastic balls cannot collide infinitely often in
-  // finite time. 0 turns it off. See docs/world.md.
+  // finite time. 0 turns it off. See docs/engine.md, "Response".
   double collapse_time = 0.0;
   // Side of the broad-phase grid's cells; 0 chooses it (at least the largest diameter; 1.25
   // diameters in a dilute world). A cell smaller than the largest diameter given here is raised
-  // to it. Room beyond the diameter is used as the cells' hysteresis (docs/world.md).
+  // to it. Room beyond the diameter is used as the cells' hysteresis (docs/engine.md).
   double cell_size = 0.0;
 };
 
@@ -139,7 +140,7 @@ class World {
   // ---- static geometry ----
   // Walls are refused in a periodic world (InvalidArgument): a wall near one edge of the cell
   // touches balls near the opposite edge through the wrap, which needs every wall listed and
-  // swept at each of its periodic images; not done yet (docs/world.md).
+  // swept at each of its periodic images (docs/world.md, "Known limits").
   WallId add_segment(const Segment& segment);
   // Consecutive points joined by segments (and the last back to the first when closed); returns
   // the first segment's id, the rest follow in order.

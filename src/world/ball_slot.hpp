@@ -1,6 +1,6 @@
 // carom internal: a ball's record as the world's engine stores it, one slot a ball, and what
 // prediction reads of every candidate partner (the radius and mass it reads too are its
-// species', species.hpp). Design: docs/world.md, "Memory layout".
+// species', species.hpp). Design: docs/engine.md, "Memory".
 #pragma once
 
 #include <cstdint>
@@ -17,7 +17,7 @@ inline constexpr std::int32_t kNoBall = -1;               // no ball, no cell (g
 // The grid's entries for the ball sit in the same line (grid.hpp): walking a cell's list then
 // reads the line that prediction reads of each neighbour anyway, where a 48-byte slot (which
 // straddles two lines half the time) beside the grid's own arrays touched two to four lines a
-// neighbour; 8 bytes are left over (docs/performance.md, seventeenth slice).
+// neighbour; 8 bytes are left over (docs/decisions/0010-memory-layout.md).
 struct alignas(64) BallSlot {
   Vec2 position;
   Vec2 velocity;

@@ -5,7 +5,7 @@
 // binary heap (in the exact event order), later buckets of the current "year" in unsorted
 // lists, and events beyond the year in one overflow list that is sorted into buckets when the
 // year ends (with the width re-tuned to the events then pending). Replacing a slot and taking
-// the earliest are O(1) on average. Design: docs/world.md, "One event per ball".
+// the earliest are O(1) on average. Design: docs/engine.md, "One event per ball".
 #pragma once
 
 #include <bit>
@@ -45,7 +45,7 @@ class EventQueue {
   // Whether set() defers filing an event that falls in a later bucket until the second top()
   // after it, asking the cache for its bucket's list head now: large worlds' events are filed
   // across the queue's whole year, a miss or two each, which then overlap the engine's work
-  // (docs/world.md, "Looking ahead"). Events at the current bucket are filed at once, and top()
+  // (docs/engine.md, "Memory"). Events at the current bucket are filed at once, and top()
   // files the deferred events of a bucket before it opens it, so the order of events is the same
   // either way.
   void defer_filing(bool on) noexcept {
@@ -150,7 +150,7 @@ class EventQueue {
   // Writes an entry with one 16-byte store where the CPU has SSE2: the heap reads entries just
   // written all the time (a push's parent is often the last push), and a read of a whole entry
   // is served from the store buffer only when one store wrote all of it; written in parts, it
-  // waits for them to reach the cache (docs/performance.md, seventeenth slice).
+  // waits for them to reach the cache (docs/decisions/0004-calendar-event-queue.md).
   static void write_entry(Entry& to, const Entry& entry) noexcept {
 #if defined(__SSE2__)
     const auto ids = static_cast<std::uint64_t>(entry.partner) << 32 | entry.owner_and_kind;
@@ -168,8 +168,8 @@ class EventQueue {
   // Files the deferred events set before the last top() (their list heads, asked for by set(),
   // have had an event's time to come; the back link filing writes into the old head is a store,
   // which does not hold the engine up). Reading the heads one top() earlier, to ask for those
-  // links, stalled on each (the head asked for a few instructions before): 10⁶ balls ran 4 – 8 %
-  // slower so (docs/performance.md, seventeenth slice).
+  // links, stalls on each (the head asked for a few instructions before; measured in
+  // docs/decisions/0004-calendar-event-queue.md).
   void age_deferred() noexcept;
   void file_deferred(std::uint32_t owner) noexcept;
   // Starts a new year from the overflow list; false when no finite event is left.

@@ -210,8 +210,8 @@ inline void EventQueue::heap_remove(std::uint32_t owner) {
 }
 
 // `entry` is the one at `position`, or to go there: passed in registers rather than read back
-// from heap_, where it has just been written (when entries were written in parts, reading one
-// back waited for the parts to reach the cache; docs/performance.md, seventeenth slice).
+// from heap_, where it has just been written (an entry written in parts is read back only once
+// the parts reach the cache; docs/decisions/0004-calendar-event-queue.md).
 inline void EventQueue::heap_sift_up(std::uint32_t position, const Entry& entry) {
   while (position > 0) {
     const std::uint32_t parent = (position - 1) / 2;

@@ -26,7 +26,7 @@ class Grid {
   // nx × ny cells of size `cell` (width, height) from `lower`; periodic wraps both axes. A ball
   // leaves its cell only once its centre is `hysteresis` (per axis) beyond the cell's side, so
   // that a ball's centre lies within its cell grown by that much; the cell less twice the
-  // hysteresis is what must hold the largest diameter (docs/world.md, "The broad phase").
+  // hysteresis is what must hold the largest diameter (docs/engine.md, "The broad phase").
   // In a closed grid (a box) the outer sides of the outermost cells are never left.
   // Every ball of the slots (use_slots) is left in no cell.
   void setup(Vec2 lower, Vec2 cell, std::int32_t nx, std::int32_t ny, bool periodic, bool closed,

@@ -2,8 +2,8 @@
 // to back their large allocations with 2 MiB pages (Linux transparent huge pages, "madvise"
 // mode). Prediction reads a few balls, their queue entries and grid links at addresses that
 // are far apart in a large world; with 4 KiB pages nearly each of those reads also misses the
-// TLB. Measured at 10^6 disks: 1.7 to 1.8 times fewer CPU seconds per collision
-// (docs/performance.md, "third slice"). Elsewhere, or when the kernel declines, it behaves as
+// TLB (docs/decisions/0011-huge-pages-for-large-arrays.md). Elsewhere, or when the kernel
+// declines, it behaves as
 // std::allocator: the advice changes where memory lies, never what the engine computes.
 #pragma once
 

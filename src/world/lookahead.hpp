@@ -1,8 +1,8 @@
 // carom internal: what the engine's lookahead (world_lookahead.cpp) carries from one call to
 // the next (a call each time the queue's current bucket advances). Each call asks the cache for
 // one more level of the data the events ahead will read: what it learns from lines that the
-// call before asked for is kept here, so that no call waits for memory. Design: docs/world.md,
-// "Looking ahead".
+// call before asked for is kept here, so that no call waits for memory. Design: docs/engine.md,
+// "Memory".
 #pragma once
 
 #include <array>

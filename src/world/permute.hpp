@@ -14,8 +14,8 @@ namespace carom::detail {
 // re-ordering a large world's arrays needs no second copy of them (which would raise the
 // process's peak memory). The cycles are followed once for all the arrays: each step's next
 // place is a load that depends on the last, so a step costs a memory round trip wherever the
-// permutation jumps, and the arrays' own moves in one step overlap (10⁶ balls: the ball slots,
-// infos and handles 156 ms array by array, docs/performance.md, seventeenth slice).
+// permutation jumps, and the arrays' own moves in one step overlap
+// (docs/decisions/0012-ball-order-by-cell.md).
 template <class... Vectors>
 void move_all_to(std::span<const std::uint32_t> destination, Vectors&... arrays) {
   std::vector<bool> moved(destination.size(), false);

@@ -1,6 +1,6 @@
 // carom internal: what balls of one kind share (radius, mass, restitution), kept once in a
 // table rather than in every ball's slot, so that a slot is 48 bytes rather than 64 (a gas of
-// equal disks is one species). Design: docs/world.md, "Memory order".
+// equal disks is one species). Design: docs/engine.md, "Memory".
 #pragma once
 
 #include <array>

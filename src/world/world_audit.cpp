@@ -77,8 +77,8 @@ Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
 Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
                                   double tolerance) const {
   const Impl& w = *this;
-  // Two immovable balls pass through each other (nothing could respond; docs/world.md): their
-  // overlap breaks no promise.
+  // Two immovable balls pass through each other (nothing could respond; docs/engine.md,
+  // "Response"): their overlap breaks no promise.
   if (!w.movable(i) && !w.movable(j)) return std::nullopt;
   const double reach = w.radius_of(i) + w.radius_of(j);
   const Vec2 q = w.position_at(j, w.time);

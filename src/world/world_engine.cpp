@@ -1,5 +1,5 @@
 // The event-driven engine behind carom::World: prediction, the event loop, contact response and
-// the grid's upkeep. Design and the argument that no contact is missed: docs/world.md.
+// the grid's upkeep. Design and the argument that no contact is missed: docs/engine.md.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -43,9 +43,9 @@ constexpr double kMinCells = 1024.0;
 // A dilute world (fewer balls than this per cell of the smallest size) gets cells kDiluteCells
 // times that size, and the room beyond the diameter becomes the cells' hysteresis: a ball then
 // leaves its cell only this far past its side, so that one turning back near a side does not
-// cross twice (docs/world.md, "The broad phase"). At η = 0.3 (0.38 balls a cell) it cuts the
-// crossings a collision from 1.33 to 0.83; in denser gases crossings are few and the larger
-// blocks cost more than they save (docs/performance.md, tenth slice).
+// cross twice (docs/engine.md, "The broad phase"). In a dilute gas it cuts the crossings a
+// collision by a third; in denser gases crossings are few and the larger blocks cost more than
+// they save (docs/decisions/0006-grid-cells-and-hysteresis.md).
 constexpr double kDiluteBallsPerCell = 0.55;
 constexpr double kDiluteCells = 1.25;
 // The share of that room given to the hysteresis: all but a sliver, so that the cell less twice
@@ -93,21 +93,18 @@ constexpr double kResolvableMotion = 0x1p-10;
 constexpr std::uint64_t kEventsBeforeProof = 64;
 // Worlds with at least this many balls look ahead (world_lookahead.cpp: the data of the events
 // in the queue's next buckets asked for, stage by stage) and defer filing events (event_queue.hpp).
-// Where everything is in cache both only cost their instructions: 30 % more time a collision at
-// 10^4 balls with the threshold at 0. Measured against no prefetching at all, η = 0.3: 33 000
-// balls (4 MB) 538 against 498 ns, 66 000 (8 MB) 569 against 605.
+// Where everything is in cache both only cost their instructions, so they start where the world
+// outgrows the caches (docs/decisions/0013-lookahead-in-large-worlds.md).
 constexpr std::uint32_t kPrefetchMinBalls = 1u << 16;
-// ... and from this many on, their lookahead goes a stage deeper (world_lookahead.cpp): at 10⁶
-// balls (120 MB) 4 – 10 % less time a collision. Since the seventeenth slice's changes (64-byte
-// slots, the queue's stalls gone) also at 10⁵ (12 MB): paired 0.924 (η = 0.3) and 0.815 (0.6);
-// at 70 000 (8.5 MB) 1.056, still more (docs/performance.md, seventeenth slice).
+// ... and from this many on, their lookahead goes a stage deeper (world_lookahead.cpp), which
+// pays once the arrays are several times the last-level cache (the same record).
 constexpr std::uint32_t kDeepLookaheadMinBalls = 90'000;
 
 // The unit vector along d, d not zero. Where d·d is far from both ends of the double range,
 // d / √(d·d) (within an ulp or so of unit length, as carom::normalized's quotient by std::hypot
-// is): glibc's hypot, careful where the squares would overflow or underflow, took 6 % of a
-// 10⁴-ball gas's time at one call a contact (docs/performance.md, seventeenth slice).
-// Elsewhere normalized, which scales first.
+// is): glibc's hypot, careful where the squares would overflow or underflow, is a slow call in
+// the response's hot path (docs/decisions/0016-response-repeats-bounce.md). Elsewhere
+// normalized, which scales first.
 CAROM_ALWAYS_INLINE inline Vec2 unit_along(Vec2 d) {
   const double squared = length_squared(d);
   if (squared > 0x1p-1000 && squared < 0x1p+1000) [[likely]]
@@ -118,10 +115,9 @@ CAROM_ALWAYS_INLINE inline Vec2 unit_along(Vec2 d) {
 // Calls visit(first ball) for each list of the 3×3 block around the interior cell (cx, cy), in
 // row-major order. Most of the nine cells are empty (a cell holds 0.4 balls at η = 0.3), so the
 // heads are read first and only the occupied lists visited: an empty cell costs a comparison
-// rather than a turn of the loop and a branch that often mispredicts. (Large worlds once walked
-// all nine cells one by one, whose branches let the processor run ahead to heads in main
-// memory; since the lookahead asks for the heads in advance, this way is faster at every size:
-// 10⁶ balls 6 – 8 % and 6·10⁵ 9 %, docs/performance.md, nineteenth slice.)
+// rather than a turn of the loop and a branch that often mispredicts; the lookahead asks for the
+// heads in advance in large worlds, so this is the faster way at every size
+// (docs/decisions/0008-selections-instead-of-branches.md).
 template <typename Visit>
 CAROM_ALWAYS_INLINE inline void for_each_block_list(const detail::Grid& grid, std::int32_t cx,
                                                     std::int32_t cy, Visit&& visit) {
@@ -368,7 +364,7 @@ void World::Impl::predict_all() {
 
 // The changed ball is at the world's time (or dead). Its prediction is what a contact's would
 // be: its slot covers every pair it is now in, and a neighbour's event with the ball as it was
-// is stale by the ball's version and is re-predicted when it comes up (docs/world.md, "One
+// is stale by the ball's version and is re-predicted when it comes up (docs/engine.md, "One
 // event per ball").
 void World::Impl::repredict_changed(std::uint32_t ball) {
   if (!events_valid) return;            // the next run predicts every ball anyway
@@ -454,8 +450,8 @@ CAROM_ALWAYS_INLINE inline void World::Impl::finish_prediction(bool named, Event
 // branched on: the kind is random.
 CAROM_ALWAYS_INLINE inline void World::Impl::file_prediction(Event& best, bool found) {
   static_assert(detail::kClearBehind == 1);  // (so that !found is the flag: no branch)
-  // (As a mask: GCC 12 made a branch of the ?: form; 4 % of 10⁴'s time, docs/performance.md,
-  // twentieth slice.)
+  // (As a mask: GCC 12 makes a branch of the ?: form, which mispredicts;
+  // docs/decisions/0008-selections-instead-of-branches.md.)
   const std::uint32_t crossing =
       0U - static_cast<std::uint32_t>(best.kind == EventKind::cell_crossing);
   best.partner_version =
@@ -465,7 +461,7 @@ CAROM_ALWAYS_INLINE inline void World::Impl::file_prediction(Event& best, bool f
 
 // Ball `ball` is at the world's time. Its slot gets its earliest event: a contact with a ball
 // in the 3×3 block of cells around it or a wall listed in its cell, or leaving its cell. The
-// other ball's slot is left alone: this one's covers their pair (docs/world.md, "One event per
+// other ball's slot is left alone: this one's covers their pair (docs/engine.md, "One event per
 // ball").
 void World::Impl::predict(std::uint32_t ball) {
   Event best;
@@ -478,7 +474,7 @@ void World::Impl::predict(std::uint32_t ball) {
 // A contact's two balls, each as predict would, i's slot set first. Where both take the named
 // path their neighbours go into one batch, solved by one kernel call: the two predictions are
 // independent, and so the processor overlaps their chains of loads and arithmetic
-// (docs/performance.md, sixteenth slice).
+// (docs/decisions/0009-pair-kernel-avx2.md).
 void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
   Event best_i;
   Event best_j;
@@ -980,7 +976,7 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
   const double approach = dot(a.velocity, normal);
   // Inside a bowl a ball moving along the wall (approach 0) is a contact too (the query reports
-  // it), answered by bounce_inside_arc's turn (docs/world.md, "A ball in a bowl").
+  // it), answered by bounce_inside_arc's turn (docs/engine.md, "Response").
   const bool in_bowl = detail::inside_arc(walls[wall], a.position);
   bool resolved = false;
   if (approach > 0.0 || (in_bowl && now.hit)) {
@@ -1065,7 +1061,7 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, b
   }
   // The last prediction found no contact with any ball of the old block, and of its nine cells
   // the new block keeps six: only the three it brings into reach, across the new cell's far
-  // side, are looked at (docs/world.md, "Crossing a cell").
+  // side, are looked at (docs/engine.md, "Crossing a cell").
   const std::int32_t step_x = kStepX[side & 3];
   const std::int32_t step_y = kStepY[side & 3];
   const std::int32_t first =

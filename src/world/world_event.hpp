@@ -1,5 +1,5 @@
 // carom internal: a predicted event of the world's engine and the total order events are
-// processed in (docs/world.md, "Event order").
+// processed in (docs/engine.md, "Event order").
 #pragma once
 
 #include <cstdint>
@@ -23,7 +23,7 @@ struct Event {
   std::uint32_t partner = 0;  // the other ball, the wall, or the CrossingSide
   // The partner ball's contact count when predicted: the event is stale once it has changed. A
   // cell crossing's is kClearBehind where the prediction found no contact with any ball around
-  // its owner, else 0 (docs/world.md, "Crossing a cell").
+  // its owner, else 0 (docs/engine.md, "Crossing a cell").
   std::uint32_t partner_version = 0;
 };
 inline constexpr std::uint32_t kClearBehind = 1;

@@ -1,6 +1,6 @@
 // carom internal: the state behind carom::World and the event-driven engine's operations.
 // The engine itself (prediction, event processing, the grid's upkeep) is in world_engine.cpp;
-// the public API with its validation in world.cpp. Design: docs/world.md.
+// the public API with its validation in world.cpp. Design: docs/engine.md.
 #pragma once
 
 #include <atomic>
@@ -34,7 +34,7 @@ namespace detail {
 inline constexpr double kCellMargin = 1e-6;
 // A grid's hysteresis (grid.hpp) is at most this fraction of its cell: a periodic pair's offset
 // then moves by under 2.4 cells between its prediction and its contact, so it was under 3.4 when
-// predicted, below half a period from kSingleImageMinCells (7) cells on (docs/world.md,
+// predicted, below half a period from kSingleImageMinCells (7) cells on (docs/engine.md,
 // "Boundaries"). Dilute cells have just under it; larger ones meet it.
 inline constexpr double kMostHysteresis = 0.1;
 
@@ -199,7 +199,7 @@ struct World::Impl {
   // ball alone, when every other ball's pending event is still valid, rather than every ball at
   // the next run (docs/world.md, "Changing balls between steps").
   void repredict_changed(std::uint32_t ball);
-  // Renumbers the slots cell by cell (docs/world.md, "Memory order"); changes no result.
+  // Renumbers the slots cell by cell (docs/engine.md, "Memory"); changes no result.
   void sort_by_cell();
   void predict(std::uint32_t ball);
   // predict for a contact's two balls, i's slot set first (world_engine.cpp).
@@ -277,7 +277,7 @@ struct World::Impl {
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
   // A ball leaving its cell through `side` at t: moved to the next cell and predicted, looking only
   // at the cells the crossing brings into reach where its last prediction found no contact
-  // around it (clear_behind; docs/world.md, "Crossing a cell").
+  // around it (clear_behind; docs/engine.md, "Crossing a cell").
   void cross_cell(std::uint32_t ball, std::uint32_t side, double t, bool clear_behind);
   [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
 };

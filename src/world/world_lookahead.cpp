@@ -1,8 +1,8 @@
 // Large worlds' lookahead: each time the queue's current bucket advances, the cache is asked for
 // what the events of the next buckets will read, one more level of indirection each time, so
 // that their misses overlap the work in between rather than stalling it when each event comes
-// up. It only prefetches and reads: no result depends on it. Design: docs/world.md, "Looking
-// ahead"; measurements: docs/performance.md, eleventh slice.
+// up. It only prefetches and reads: no result depends on it. Design: docs/engine.md, "Memory";
+// measurements: docs/decisions/0013-lookahead-in-large-worlds.md.
 #include <algorithm>
 
 #include "world_impl.hpp"

@@ -1,6 +1,6 @@
 // When can the world prove that no contact will ever happen again? run_collisions asks, after a
 // long stretch of events without a contact, so that it returns instead of following cell
-// crossings for ever. The rules and why they are exact: docs/world.md, "When nothing will happen".
+// crossings for ever. The rules and why they are exact: docs/engine.md, "When nothing will happen".
 #include <algorithm>
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// `carom gas` and `carom eos`: a small run gives every key the issue lists, --out writes every
+// `carom gas` and `carom eos`: a small run gives every key of the report, --out writes every
 // file, and bad options give one message naming the option and value, with exit status 2.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

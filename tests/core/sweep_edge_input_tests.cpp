@@ -1,4 +1,4 @@
-// Extreme but valid input for the time of impact (issue 8): 10⁶ diameters per step, radii from
+// Extreme but valid input for the time of impact: 10⁶ diameters per step, radii from
 // 10⁻⁶ to 10⁶ in one pair, balls exactly touching at the start, an arc of zero span and a
 // segment of zero length (both a point). Each works exactly as documented in sweep.hpp; the one
 // finite input refused is an arc whose circle reaches beyond the double range.

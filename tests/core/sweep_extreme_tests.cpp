@@ -203,7 +203,7 @@ TEST(SweepExtremeRegression, TinyBallsFarApartHeadOn) {
                    .hit);
 }
 
-// Found by the time-of-impact fuzzer's smoke run (session 8): a ball missing a segment that ends
+// Found by the time-of-impact fuzzer's smoke run: a ball missing a segment that ends
 // at (1, −max) was given the nearest point a + (b − a)·1, which rounded to (0, −∞), and so a NaN
 // normal. The nearest point is now the end point itself.
 TEST(SweepExtremeRegression, NearestPointOfASegmentEndingAtTheRangesEdge) {

@@ -1,9 +1,10 @@
 // Properties of the time of impact over 100 000 random cases each (fixed seeds, reproducible).
 //
 // Tolerances. Coordinates here are O(10) and radii O(0.05..3), so one rounding of a position is
-// about 2e-15. kContactTol = 1e-9 (relative to the contact distance, as the issue asks) leaves a
-// margin of 10⁵ over that for the handful of operations between inputs and a_at/b_at; the
-// closed-form root has no cancellation, so it is met with room to spare even near grazes.
+// about 2e-15. kContactTol = 1e-9 (relative to the contact distance, as docs/guarantees.md
+// promises) leaves a margin of 10⁵ over that for the handful of operations between inputs and
+// a_at/b_at; the closed-form root has no cancellation, so it is met with room to spare even near
+// grazes.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -51,7 +51,7 @@ constexpr std::size_t kMaxBalls = 24;
 // stop condition) and the input ends. A ball of radius 10⁻⁶ rattling between a box's corner and
 // an immovable ball set against it makes millions of real contacts a time unit (sessions 6 and
 // 7, seeds 48 and 51), and light balls between heavy ones in a small periodic cell 10⁵ a call
-// (session 8, seed 62: 10 s an input under the sanitizers): valid physics whose cost is only the
+// (10 s an input under the sanitizers): valid physics whose cost is only the
 // count, which ended fuzz runs on their time limit. Ordinary inputs resolve a few thousand.
 constexpr std::uint64_t kMaxContacts = 50'000;
 // The box and the periodic cell: [0, 20]².
@@ -277,8 +277,8 @@ class Harness {
     def.mass = in_.pick(kMasses);
     // A moving immovable ball does work on the balls it meets without limit: crushed balls are
     // refused once their contacts pile up (WorldExtreme.RowOfBallsCrushedByAMovingImmovableBall…),
-    // but one driving a periodic gas heats it ever faster, more contacts each time unit (tried in
-    // session 5: inputs of 26 s).
+    // but one driving a periodic gas heats it ever faster, more contacts each time unit (inputs
+    // of 26 s when tried).
     // Valid input the fuzzer cannot bound, so immovable balls stay at rest.
     if (def.mass == carom::kImmovable) def.velocity = {};
     const std::uint8_t r = in_.byte();
@@ -425,9 +425,9 @@ class Harness {
     const double limit = world().time() + in_.pick(kSteps) * 4.0;
     // Without a time limit only where a run is sure to end: a box, whose walls the balls meet. A
     // periodic cell can hold orbits that never meet and cannot be proved not to, and an open
-    // world balls that meet only after an astronomically long flight (found by seed 42 of
-    // session 6: two balls side by side at speed 7, converging by 1.7·10⁻¹⁵, a run of 10¹⁵
-    // grid re-plans; world.hpp): runs the caller must bound.
+    // world balls that meet only after an astronomically long flight (found by the fuzzer: two
+    // balls side by side at speed 7, converging by 1.7·10⁻¹⁵, a run of 10¹⁵ grid re-plans;
+    // world.hpp): runs the caller must bound.
     const bool unlimited = (how & 0x80) != 0 && def_.boundary == Boundary::box;
     CAROM_TRACE("run_collisions(%u, %.17g)\n", static_cast<unsigned>(count),
                 unlimited ? INFINITY : limit);

@@ -49,7 +49,7 @@ fmt='def f: if . == null then "–" else (. * 100000 | round / 100000 | tostring
   echo "![Z(η) against Henderson](figures/validation/eos.svg)"
   echo
   echo "How to read it. Henderson's equation is an approximation, good to about 0.3 % for"
-  echo "η ≤ 0.3 (the issue's bound, also tested in tests/science at N = 400). Above that no"
+  echo "η ≤ 0.3 (the validation's bound, also tested in tests/science at N = 400). Above that no"
   echo "exact result exists to compare with: the measured Z falls below Henderson's smoothly and"
   echo "increasingly with density, which is how an approximate equation of state drifts, but this"
   echo "report does not prove which is right there. The rate/pressure ratio, on the other hand,"

@@ -1,10 +1,10 @@
-// carom_world_soak: the soak test of issue 8 (make soak; not in CI, minutes long). The hard-disk
+// carom_world_soak: the soak test (make soak; not in CI, minutes long). The hard-disk
 // gas of `carom bench` (carom/science/hard_disk_gas.hpp: equal elastic disks in a periodic box)
 // runs 10⁸ collisions in chunks of 10⁶; after every chunk it checks
 // - World::audit: no overlap beyond 10⁻⁹ of the sum of radii (its default), every ball in the
 //   grid cell it is filed in;
-// - energy drift |K − K₀| / K₀ ≤ 10⁻¹⁰ (issue 3's bound);
-// - momentum drift |P − P₀| / Σ m·|v| ≤ 10⁻¹² (issue 3's bound). Relative to Σ m·|v|, not to
+// - energy drift |K − K₀| / K₀ ≤ 10⁻¹⁰ (the world's conservation bound, docs/guarantees.md);
+// - momentum drift |P − P₀| / Σ m·|v| ≤ 10⁻¹² (likewise). Relative to Σ m·|v|, not to
 //   |P₀|: the gas starts with zero total momentum (|P₀| is itself rounding), so a drift relative
 //   to it means nothing; Σ m·|v| is the scale of the terms whose rounding makes the drift, the
 //   measure tests/world/world_conservation_tests.cpp uses too;

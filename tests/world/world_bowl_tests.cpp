@@ -1,5 +1,5 @@
 // Balls in a bowl: contacts with the inside of an arc, where a ball moving along the wall
-// re-enters it at once (docs/world.md, "A ball in a bowl"). Before carom::bounce_inside_arc such
+// re-enters it at once (docs/engine.md, "Response"). Before carom::bounce_inside_arc such
 // a ball left through the arc.
 #include <gtest/gtest.h>
 

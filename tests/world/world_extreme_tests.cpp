@@ -1,4 +1,4 @@
-// Extreme but valid input at the World level (issue 8): speeds of 10⁶ diameters per step, radii
+// Extreme but valid input at the World level: speeds of 10⁶ diameters per step, radii
 // from 10⁻⁶ to 10⁶ in one world, a dense packing of exactly touching disks, points as walls
 // (a zero-length segment, a zero-span arc); and the cases the world fuzzer
 // (tests/fuzz/world_fuzz.cpp) found, named after what it found. Each works exactly, to the
@@ -204,8 +204,8 @@ void run_touching_packing(int side, std::uint64_t collisions) {
   EXPECT_EQ(world.run_collisions(collisions), collisions);
   EXPECT_GT(world.time(), 0.0);
   EXPECT_FALSE(world.audit().has_value());
-  // Issue 3's bounds (tests/world/world_conservation_tests.cpp): each bounce rounds energy and
-  // momentum by ~1e-16 of the pair's, a drift of ~√n·1e-16 over n contacts.
+  // The conservation bounds (tests/world/world_conservation_tests.cpp): each bounce rounds energy
+  // and momentum by ~1e-16 of the pair's, a drift of ~√n·1e-16 over n contacts.
   EXPECT_NEAR(world.kinetic_energy(), energy, 1e-10 * energy);
   EXPECT_LE(length(world.momentum() - momentum), 1e-12 * scale);
 }
@@ -461,8 +461,8 @@ TEST(WorldFuzzFound, PeriodicDragStopsAtTheImageOfABall) {
   EXPECT_NEAR(length(gap), 0.2, 1e-12);
 }
 
-// Two immovable balls pass through each other (docs/world.md: nothing could respond); the audit
-// reported their overlap as a violation.
+// Two immovable balls pass through each other (docs/engine.md, "Response": nothing could respond);
+// the audit reported their overlap as a violation.
 TEST(WorldFuzzFound, ImmovableBallsPassingThroughEachOtherPassTheAudit) {
   World world;
   world.add_ball(extreme_ball({-2.0, 0.0}, {1.0, 0.0}, 0.5, kImmovable));
@@ -574,8 +574,8 @@ TEST(WorldFuzzFound, BallDraggedAgainstTheOutsideOfAnArcStaysThere) {
   EXPECT_FALSE(world.audit().has_value()) << *world.audit();
 }
 
-// Found by the world fuzzer once it no longer ended an input at a ball touching an arc
-// (session 5): nearest_free had left this ball a rounding inside the circle along which it
+// Found by the world fuzzer once it no longer ended an input at a ball touching an arc:
+// nearest_free had left this ball a rounding inside the circle along which it
 // touches the first arc's outside (by the squared distance; its length rounds to 8.5 + 0.1
 // exactly, so the gap to the arc's nearest point rounds to the radius, no contact); dragged
 // from there towards the centre it went through that arc and stopped on the second, 0.0024 off
@@ -649,7 +649,7 @@ TEST(WorldFuzzFound, DragFromFarAwayEndsAtThePlaceAskedOrTouching) {
   }
 }
 
-// Found by the world fuzzer (session 5): a ball 4.5·10²⁵ away dragged with nearest_free to a
+// Found by the world fuzzer: a ball 4.5·10²⁵ away dragged with nearest_free to a
 // place where it overlaps a segment by most of its radius landed there: its touch, 10⁻²⁴ of the
 // way short of the end, rounded to the end itself, so the first sweep saw no touch. Untouched
 // but coarse, a drag is now swept again from a little short of its end.
@@ -721,7 +721,7 @@ TEST(WorldFuzzFound, ContactsWhereTimeIsTooCoarseAreRefusedAsAStall) {
   EXPECT_LT(world.time(), 1e13 + 100.0);
 }
 
-// Found by the world fuzzer (session 6, seed 43): at t = 2.7·10¹¹ the double grid of time is
+// Found by the world fuzzer: at t = 2.7·10¹¹ the double grid of time is
 // 6·10⁻⁵ apart, and a ball of radius 10⁻⁶ at speed 0.5 moves 3·10⁻⁵ in one step of it. Its wall
 // contact came up with the ball rounded past the wall, not approaching it, so nothing bounced and
 // the ball left the box (to x = −1.47 by the step's end). A predicted contact that does not

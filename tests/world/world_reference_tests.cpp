@@ -40,10 +40,10 @@ using testing::SceneWorld;
 using testing::Tolerances;
 
 constexpr double kReferenceStep = 1.0 / 60.0;
-// The "speeds up to 100 diameters per step".
+// Speeds up to 100 diameters per step, as docs/guarantees.md promises.
 constexpr double kDiametersPerStep = 100.0;
 
-// Times agree to 1e-9 relative (the requirement), measured against max(|t|,
+// Times agree to 1e-9 relative (docs/guarantees.md, section 1), measured against max(|t|,
 // kReferenceStep). One prediction from identical states carries ~1e-15 relative (a handful of
 // roundings, times the conditioning of the contact's quadratic); 1e-9 leaves room for near-grazes.
 // Measured on these scenes: at most 2e-15 contact by contact and step by step, 2e-13 over the whole
@@ -415,7 +415,7 @@ TEST(WorldReference, WholeRunAcrossCalls) {
   EXPECT_TRUE(testing::same_state(built, reference, scene, tolerances_for(options)));
 }
 
-// ---- the 2000 balls (CAROM_LONG_TESTS=1) ---------------------------------------------
+// ---- 2000 balls (CAROM_LONG_TESTS=1) -------------------------------------------------------
 
 constexpr std::size_t kLongBallCount = 2000;
 constexpr std::size_t kLongContactsCompared = 1000;

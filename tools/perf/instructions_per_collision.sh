@@ -3,7 +3,7 @@
 # Unlike a time, the count is the same on every run of the same binary with the same inputs,
 # whatever else the host is doing and whichever host it is (valgrind runs the AVX2 kernel on any
 # x86-64 with AVX2; it hides AVX-512): a change of the engine's work shows here even where the
-# host's noise hides it in the times (docs/performance.md, twelfth slice).
+# host's noise hides it in the times (docs/decisions/0024-judging-speed-on-shared-hosts.md).
 #
 # Usage: tools/perf/instructions_per_collision.sh PROBE [N ETA]...
 #   PROBE: build/release/tools/perf/carom_world_gas_probe (a release build of it)

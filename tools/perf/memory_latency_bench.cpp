@@ -1,10 +1,10 @@
 // carom benchmarks: the latency of one load that depends on the one before, over buffers from
 // 1 MiB to 256 MiB: the time of a cache or memory round trip that nothing overlaps. The world's
 // cost a collision grows with the number of balls by about (round trips no prefetch hides) ×
-// (this latency at the world's size), which is how docs/performance.md ("tenth slice") reads the
-// 10⁶-ball figure. Each buffer is a random cycle through its cache lines (one pointer a line),
-// in huge pages as the world's arrays are, so that neither the hardware prefetcher nor the TLB
-// takes part. The counter per_load is the time of one load.
+// (this latency at the world's size), which is how docs/performance.md ("What bounds each size")
+// reads the 10⁶-ball figure. Each buffer is a random cycle through its cache lines (one pointer a
+// line), in huge pages as the world's arrays are, so that neither the hardware prefetcher nor the
+// TLB takes part. The counter per_load is the time of one load.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -93,7 +93,7 @@ const Cycle& shared_cycle() {
 // The same random cycle through 256 MiB (all in memory), walked by `kChains` independent chains
 // at once, spread evenly along it: the processor overlaps their misses, as many as it keeps in
 // flight. per_line is the time a line then, the least a memory-bound loop pays for each line
-// it needs however early it asks for it (docs/performance.md, fourteenth slice).
+// it needs however early it asks for it (docs/decisions/0013-lookahead-in-large-worlds.md).
 template <std::size_t kChains>
 void BM_ParallelLoads(benchmark::State& state) {
   const Cycle& cycle = shared_cycle();

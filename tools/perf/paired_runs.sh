@@ -1,7 +1,8 @@
 #!/bin/sh
 # Two builds of the gas probe timed at the same moment, one on each core, the cores swapped every
-# round: on a shared host whose speed moves by a fifth within minutes (docs/performance.md,
-# fifteenth and sixteenth slices), runs one after the other land in different stretches of its
+# round: on a shared host whose speed moves by a fifth within minutes
+# (docs/decisions/0024-judging-speed-on-shared-hosts.md), runs one after the other land in
+# different stretches of its
 # noise, while a pair run together meets the same stretch. Prints each round's ns a collision
 # (the probe's CPU time) and the second build's over the first's, then the median and quartiles
 # of the ratios of pairs of rounds (below): a change is told from the noise when the quartiles

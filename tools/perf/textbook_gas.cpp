@@ -1,6 +1,6 @@
-// carom_textbook_gas: a textbook event-driven hard-disk simulator, the yardstick of issue 3's
-// speed goals ("a careful textbook implementation (one earliest event per ball, an indexed binary
-// heap, cell crossings)"), run on the same scene as carom_world_gas_probe and timed the same way.
+// carom_textbook_gas: a textbook event-driven hard-disk simulator, the yardstick of the world's
+// speed goals (a careful textbook implementation: one earliest event per ball, an indexed binary
+// heap, cell crossings), run on the same scene as carom_world_gas_probe and timed the same way.
 //   carom_textbook_gas N ETA COLLISIONS_PER_BALL [EQUILIBRATE_PER_BALL=2] [SHUFFLED=0]
 //   carom_textbook_gas --check
 // SHUFFLED=1 numbers the balls in the random order in which carom_world_gas_probe's SHUFFLED=1

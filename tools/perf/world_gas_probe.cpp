@@ -6,7 +6,7 @@
 //                         [SHUFFLED=0]
 // SHUFFLED=1 adds the same disks in a random order (as a scene file may list them), so that
 // neighbours are far apart in memory until the engine re-orders its slots.
-// Figures: docs/performance.md, "World (issue 3), second slice".
+// Figures: docs/performance.md; how to use it: tools/perf/README.md.
 #include <sys/resource.h>
 
 #include <chrono>

@@ -1,11 +1,11 @@
 #!/bin/sh
 # carom's hard-disk gas against the textbook simulator (tools/perf/textbook_gas.cpp: one earliest event
 # per ball, an indexed binary heap, cell crossings) on this host, paired on the two cores by
-# tools/perf/paired_runs.sh. The speed goals are stated "on this machine", where the textbook
-# reaches about 1.0 M collisions/s at 10^4 disks and 0.6 M at 10^5: 2.5 M and 1.5 M are 2.5 times
-# the textbook's rate at both sizes. Hosts differ by half and more in speed (docs/performance.md,
-# eighteenth slice), so the textbook run beside carom's says which kind of host a verdict of
-# `carom bench --goals` came from, and how far the engine is from the goals as the issue's machine
+# tools/perf/paired_runs.sh. The world's speed goals (2.5 M collisions/s at 10^4 disks, 1.5 M at
+# 10^5) were set on a machine where the textbook reaches about 1.0 M and 0.6 M: 2.5 times the
+# textbook's rate at both sizes. Hosts differ by half and more in speed
+# (docs/decisions/0024-judging-speed-on-shared-hosts.md), so the textbook run beside carom's says
+# which kind of host a verdict came from, and how far the engine is from the goals as that machine
 # would judge them: speed-up = the textbook's ns a collision over carom's.
 #
 # Usage: tools/perf/yardstick.sh TEXTBOOK PROBE [N ETA COLLISIONS_PER_BALL ROUNDS]...

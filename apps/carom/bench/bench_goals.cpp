@@ -13,7 +13,7 @@ namespace carom::cli {
 
 namespace {
 
-// The issue's sizes and limits.
+// The goals' sizes and limits (docs/performance.md, "The goals' status").
 constexpr std::uint64_t kSmall = 10'000;
 constexpr std::uint64_t kMedium = 100'000;
 constexpr std::uint64_t kLarge = 1'000'000;
@@ -147,7 +147,7 @@ std::vector<GoalVerdict> judge_goals(const std::vector<GasFigures>& gases) {
 std::string goals_text(const std::vector<nlohmann::ordered_json>& benches,
                        const std::vector<GoalVerdict>& verdicts, const std::string& footer) {
   std::string out =
-      "The world's goals (issue 3) on this host: each gas as `carom bench` runs it, in this "
+      "The world's goals on this host: each gas as `carom bench` runs it, in this "
       "order\n";
   // (Bytes a ball below 10^6 carry the process's fixed allocations, hence the goal's size.)
   out += fmt::format("  {:<16} {:>9} {:>9} {:>12}  {}\n", "gas", "median ns", "M/s", "bytes a ball",

@@ -1,6 +1,6 @@
-// carom tool: `carom bench --goals`, the world's speed and memory goals (issue 3, restated in
-// docs/performance.md) judged on the host at hand: which gases to run and in what order, and what
-// their figures say of each goal. Running the gases is bench_command.cpp's.
+// carom tool: `carom bench --goals`, the world's speed and memory goals (docs/performance.md)
+// judged on the host at hand: which gases to run and in what order, and what their figures say of
+// each goal. Running the gases is bench_command.cpp's.
 #pragma once
 
 #include <cstdint>
@@ -34,14 +34,14 @@ struct GasFigures {
 [[nodiscard]] GasFigures gas_figures(const nlohmann::json& bench);
 
 struct GoalVerdict {
-  std::string goal;      // as the issue states it
+  std::string goal;      // as the goals state it
   std::string measured;  // the figure and what it came from, for people
   double value = 0.0;    // in the goal's own unit (M collisions/s, a ratio, bytes a ball)
   double limit = 0.0;
   bool met = false;
 };
 
-// The seven goals, in the issue's order: at least 2.5 M collisions a second at 10^4 and 1.5 M at
+// The seven goals, in their order: at least 2.5 M collisions a second at 10^4 and 1.5 M at
 // 10^5 (each packing fraction; the median of the gas's timed runs, 10^4's runs pooled), 10^6 at
 // most twice 10^4's cost a collision (medians again), and at most 128 bytes a ball at 10^6 (the
 // larger of the two packing fractions': smaller worlds' figures carry the process's fixed

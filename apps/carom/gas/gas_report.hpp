@@ -10,7 +10,7 @@
 
 namespace carom::cli {
 
-// One JSON object: the keys the issue lists (n, eta, collisions, time, kT, Z, Z_err,
+// One JSON object: the measurements' keys (n, eta, collisions, time, kT, Z, Z_err,
 // collision_rate, mean_free_path, v4_over_v2sq, g_contact, psi6, diffusion, energy_drift,
 // wall_seconds, collisions_per_second), an _err beside each measured value, and the exact
 // values the measurements are compared with. A NaN (a value a run could not give) is null.

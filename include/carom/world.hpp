@@ -158,13 +158,15 @@ class World {
 
   // ---- advancing time ----
   // Advances exactly dt (>= 0), resolving every contact in time order; returns the time
-  // advanced, less than dt only when the stop condition fired.
+  // advanced, less than dt only when the stop condition fired or the run was stopped from
+  // outside (stop_reason() says which).
   double step(double dt);
-  // Advances to world time `time` (>= time()).
+  // Advances to world time `time` (>= time()), or less when stopped early (stop_reason()).
   double run_until(double time);
   // Resolves the next `count` contacts (ball–ball and ball–wall) and stops right after the last;
-  // returns how many it resolved (fewer only when no contact will ever happen or the stop
-  // condition fired).
+  // returns how many it resolved: fewer only when no contact will ever happen, the stop
+  // condition fired, the run was stopped from outside, or (below) the time limit came first;
+  // stop_reason() says which.
   //
   // "No contact will ever happen" is noticed in two ways. No pending event at all (every ball at
   // rest, say): it returns at once. Otherwise, after a stretch of events without a contact (cell

@@ -57,6 +57,14 @@ TEST(Wording, SweepTakesAStandingBallWithoutVb) {
   EXPECT_THAT(run.out, HasSubstr("touch at t = 0.25"));
 }
 
+TEST(Wording, DashIsNoFolder) {
+  for (const char* verb : {"gas", "eos"}) {
+    const ToolRun run = run_carom({verb, "--n", "100", "--out", "-"});
+    EXPECT_EQ(run.exit_code, kExitUsage) << verb;
+    EXPECT_THAT(run.err, HasSubstr("--out \"-\": names a folder")) << verb;
+  }
+}
+
 TEST(Wording, DashOIsOut) {
   const ScratchDir dir;
   const std::string out = (dir / "cradle.svg").string();

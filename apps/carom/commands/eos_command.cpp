@@ -146,6 +146,7 @@ std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOut
 }
 
 int run(const EosOptions& options) {
+  refuse_standard_output_as_folder("--out", options.out);
   const std::vector<double> etas = parse_etas(options.etas);
   std::vector<GasSpec> specs;
   specs.reserve(etas.size());

@@ -23,6 +23,7 @@ struct GasCommandOptions {
 
 int run(const GasCommandOptions& options) {
   const GasSpec spec = parse_gas_spec(options.gas);
+  refuse_standard_output_as_folder("--out", options.out);
   // A signal stops the run; the outputs are then written for what was measured.
   const StopOnSignals stop_on_signals;
   GasOutcome outcome;

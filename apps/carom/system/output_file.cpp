@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "options/readable_number.hpp"
+#include "options/usage_error.hpp"
 
 namespace carom::cli {
 namespace {
@@ -232,6 +233,14 @@ std::optional<std::string> check_room(const std::string& name, double bytes) {
   if (bytes <= free_bytes) return std::nullopt;
   return "would take about " + readable_bytes(bytes) + " and " + folder.string() + " has " +
          readable_bytes(free_bytes) + " free";
+}
+
+void refuse_standard_output_as_folder(const char* option, const std::string& name) {
+  if (name == kStandardOutput) {
+    throw UsageError(option, name,
+                     "names a folder to write several files into; standard output (-) is one "
+                     "stream: give a folder");
+  }
 }
 
 bool same_output(const std::string& a, const std::string& b) {

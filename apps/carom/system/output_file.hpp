@@ -67,6 +67,10 @@ class OutputFile {
 // estimate and the room, or nothing.
 [[nodiscard]] std::optional<std::string> check_room(const std::string& name, double bytes);
 
+// Throws UsageError for "-" given where a folder of outputs is asked for (gas and eos's --out):
+// standard output is one stream, not a folder.
+void refuse_standard_output_as_folder(const char* option, const std::string& name);
+
 // Whether two names reach the same output (the same file through links, or both standard output).
 [[nodiscard]] bool same_output(const std::string& a, const std::string& b);
 

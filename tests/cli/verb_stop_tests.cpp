@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "options/exit_codes.hpp"
@@ -115,24 +116,23 @@ TEST(VerbStop, RenderEndsTheAnimationAtTheLastFrameDrawn) {
   EXPECT_THAT(run.out, HasSubstr("animation: "));
 }
 
-// On a terminal, a run that has no contact for ever still shows its progress: the time and the
-// cell crossings. The tool runs on a pseudo-terminal, which is read for a second.
-TEST(VerbStop, ProgressIsShownDuringARunWithoutContacts) {
-  const ScratchDir dir;
-  const std::string scene = write_scene(dir, "orbit.json", kEndlessOrbitScene);
-  std::vector<std::string> words{CAROM_CLI_PATH, "run", scene, "--collisions", "1"};
+// What the tool shows on a terminal: it runs on a pseudo-terminal, which is read for
+// `for_how_long`, then it is sent SIGINT and read to its end. Returns the text and the exit status.
+std::pair<std::string, int> on_a_terminal(std::vector<std::string> words,
+                                          std::chrono::milliseconds for_how_long) {
+  words.insert(words.begin(), CAROM_CLI_PATH);
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
   int terminal = -1;
   const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
-  ASSERT_GE(child, 0);
+  if (child < 0) return {"forkpty failed", -1};
   if (child == 0) {
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }
   std::string seen;
-  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
+  const auto until = std::chrono::steady_clock::now() + for_how_long;
   char buffer[4096];
   while (std::chrono::steady_clock::now() < until) {
     pollfd ready{terminal, POLLIN, 0};
@@ -150,11 +150,32 @@ TEST(VerbStop, ProgressIsShownDuringARunWithoutContacts) {
   ::close(terminal);
   int status = 0;
   ::waitpid(child, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == kExitInterrupted) << seen;
+  return {seen, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
+}
+
+// On a terminal, a run that has no contact for ever still shows its progress: the time and the
+// cell crossings.
+TEST(VerbStop, ProgressIsShownDuringARunWithoutContacts) {
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "orbit.json", kEndlessOrbitScene);
+  const auto [seen, status] =
+      on_a_terminal({"run", scene, "--collisions", "1"}, std::chrono::milliseconds(1500));
+  EXPECT_EQ(status, kExitInterrupted) << seen;
   EXPECT_THAT(seen, HasSubstr("cell crossings"));
   EXPECT_THAT(seen, AnyOf(HasSubstr("t=1"), HasSubstr("t=2"), HasSubstr("t=3"), HasSubstr("t=4"),
                           HasSubstr("t=5"), HasSubstr("t=6"), HasSubstr("t=7"), HasSubstr("t=8"),
                           HasSubstr("t=9")));
+}
+
+// render --animate shows the frame it is drawing.
+TEST(VerbStop, AnimationShowsItsProgress) {
+  const ScratchDir dir;
+  const std::string gif = (dir / "break.gif").string();
+  const auto [seen, status] =
+      on_a_terminal({"render", example("billiards.json"), "--animate", gif, "--until", "200"},
+                    std::chrono::milliseconds(1200));
+  EXPECT_EQ(status, kExitInterrupted) << seen;
+  EXPECT_THAT(seen, AnyOf(HasSubstr("surveying the run"), HasSubstr(" of 6001")));
 }
 
 }  // namespace

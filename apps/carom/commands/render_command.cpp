@@ -321,7 +321,7 @@ int run(const RenderOptions& o) {
     const AnimationResult result = render_animation(scene, request);
     if (result.frames == 0) {
       std::cerr << "carom render: " << StopOnSignals::what()
-                << " before the first frame: no animation written\n";
+                << " before the first frame was drawn: no animation written\n";
       return StopOnSignals::exit_code();
     }
     report_stream(o) << "animation: " << o.animate << " (" << result.frames << " frames, "

@@ -10,6 +10,7 @@
 #include "drawing/scene_picture.hpp"
 #include "drawing/trail_recorder.hpp"
 #include "system/output_file.hpp"
+#include "system/progress_bar.hpp"
 #include "system/stop_signals.hpp"
 
 namespace carom::cli {
@@ -28,12 +29,17 @@ struct RunSurvey {
   long long frames = 0;
 };
 
-RunSurvey survey(const Scene& scene, double until, long long frames) {
+// The run is made twice; the first (no drawing) is taken as a tenth of the work.
+constexpr double kSurveyShare = 0.1;
+
+RunSurvey survey(const Scene& scene, double until, long long frames, ProgressBar& bar) {
   SceneWorld scene_world = make_world(scene);
   stop_world_on_signals(scene_world.world);
   RunSurvey result;
   std::vector<ContactEvent> contacts;
   for (long long k = 0; k < frames; ++k) {
+    bar.update(kSurveyShare * static_cast<double>(k) / static_cast<double>(frames),
+               "surveying the run");
     const double target = frame_time(until, frames, k);
     contacts.clear();
     step_scene(scene_world, target - scene_world.world.time(), &contacts);
@@ -54,11 +60,13 @@ long long frame_count(double until, double fps) {
 
 AnimationResult render_animation(const Scene& scene, const AnimationRequest& request) {
   const long long all_frames = frame_count(request.until, request.fps);
-  const RunSurvey seen = survey(scene, request.until, all_frames);
-  // After a signal in the survey, the frames it reached are drawn (a run it has made already, so
-  // short); otherwise a signal while drawing ends the video at the last frame drawn.
-  const bool surveyed_all = seen.frames == all_frames;
-  if (seen.frames == 0) return {0, 0, 0, true, 0.0};  // stopped before the first frame: no video
+  // On a terminal, how far the two runs have got (stderr; nothing in a pipe or a log).
+  ProgressBar bar(true);
+  const RunSurvey seen = survey(scene, request.until, all_frames, bar);
+  // A signal in the survey ends the verb before anything is drawn (drawing the frames surveyed
+  // would take long after the user asked to stop); one while drawing ends the video at the last
+  // frame drawn.
+  if (seen.frames < all_frames) return {0, 0, 0, true, 0.0};
   long long frames = 0;
 
   PictureStyle style;
@@ -80,7 +88,7 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
     FfmpegPipe ffmpeg(request.ffmpeg, temporary, request.format, layout.width, layout.height,
                       request.fps);
     SceneWorld scene_world = make_world(scene);
-    if (surveyed_all) stop_world_on_signals(scene_world.world);
+    stop_world_on_signals(scene_world.world);
     std::optional<TrailRecorder> trails;
     if (request.trail_seconds > 0.0) {
       trails.emplace(scene_world, request.trail_seconds);
@@ -93,10 +101,14 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
       step_scene(scene_world, time - scene_world.world.time(), &contacts);
       if (scene_world.world.stop_reason() == StopReason::interrupted) break;
       frames = k + 1;
+      bar.update(kSurveyShare + (1.0 - kSurveyShare) * static_cast<double>(frames) /
+                                    static_cast<double>(seen.frames),
+                 "frame " + std::to_string(frames) + " of " + std::to_string(seen.frames));
       if (trails) trails->record(scene_world, contacts);
       paint_picture(image, layout, draw_scene(scene_world, style));
       ffmpeg.write_frame(image.pixels(), image.stride());
     }
+    bar.finish();
     ffmpeg.finish();
   } catch (...) {
     std::filesystem::remove(temporary, ignored);

@@ -43,7 +43,8 @@ struct AnimationResult {
 // Runs the scene twice (the runs are deterministic, so they agree): once to learn the view of
 // an open world and the top speed for the colour scale, once to draw. Throws
 // std::runtime_error when drawing or ffmpeg fails; the file is then left as it was. A signal
-// (StopOnSignals) ends the video at the last frame reached, complete.
+// (StopOnSignals) while drawing ends the video at the last frame drawn, complete; one during the
+// first run ends it with no video (frames 0).
 AnimationResult render_animation(const Scene& scene, const AnimationRequest& request);
 
 }  // namespace carom::cli

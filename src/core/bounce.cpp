@@ -2,6 +2,7 @@
 #include "carom/bounce.hpp"
 
 #include "bowl_bounce.hpp"
+#include "impulse.hpp"
 #include "validate.hpp"
 
 namespace carom {
@@ -41,8 +42,9 @@ BounceResult bounce(Vec2 velocity_a, double mass_a, Vec2 velocity_b, double mass
 
   const double inverse_a = inverse_mass(mass_a);
   const double inverse_b = inverse_mass(mass_b);
-  const double impulse = (1.0 + restitution) * approach_speed / (inverse_a + inverse_b);
-  return {velocity_a - n * (impulse * inverse_a), velocity_b + n * (impulse * inverse_b), impulse};
+  const double impulse = detail::normal_impulse(approach_speed, inverse_a, inverse_b, restitution);
+  detail::apply_impulse(velocity_a, velocity_b, n, impulse, inverse_a, inverse_b);
+  return {velocity_a, velocity_b, impulse};
 }
 
 BounceResult bounce_equal_mass(Vec2 velocity_a, Vec2 velocity_b, Vec2 line_of_centres) {
@@ -64,7 +66,7 @@ WallBounceResult bounce_off_static(Vec2 velocity, double mass, Vec2 normal, doub
   const Vec2 n = normalized(normal);
   const double approach_speed = dot(velocity, n);
   if (!(approach_speed > 0.0)) return {velocity, 0.0};
-  const double speed_change = (1.0 + restitution) * approach_speed;
+  const double speed_change = detail::wall_speed_change(approach_speed, restitution);
   return {velocity - n * speed_change, speed_change * mass};
 }
 

@@ -12,6 +12,7 @@
 #include "contact_pace.hpp"
 #include "core/bowl_bounce.hpp"
 #include "core/circle_crossing.hpp"
+#include "core/impulse.hpp"
 #include "core/validate.hpp"
 #include "pair_batch.hpp"
 #include "permute.hpp"
@@ -893,14 +894,15 @@ bool World::Impl::process(const Event& event) {
   return false;
 }
 
+// Inelastic collapse prevention (the TC model; docs/engine.md, "Response"): a ball that collided
+// less than collapse_time before t bounces elastically.
+CAROM_ALWAYS_INLINE inline bool World::Impl::collided_recently(std::uint32_t ball, double t) const {
+  return def.collapse_time > 0.0 && last_contact_times[ball] > t - def.collapse_time;
+}
+
 CAROM_ALWAYS_INLINE inline double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j,
                                                                 double t) const {
-  // Inelastic collapse prevention (TC model): recently collided balls bounce elastically.
-  const double recent = t - def.collapse_time;
-  if (def.collapse_time > 0.0 &&
-      (last_contact_times[i] > recent || last_contact_times[j] > recent)) {
-    return 1.0;
-  }
+  if (collided_recently(i, t) || collided_recently(j, t)) return 1.0;
   if (!mixed_restitution) return def.restitution;
   return std::min(species_of(i).restitution, species_of(j).restitution);
 }
@@ -918,9 +920,8 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
     const double restitution = pair_restitution(i, j, t);
     const double inverse_a = species_of(i).inverse_mass;
     const double inverse_b = species_of(j).inverse_mass;
-    const double impulse = (1.0 + restitution) * approach / (inverse_a + inverse_b);
-    a.velocity -= normal * (impulse * inverse_a);
-    b.velocity += normal * (impulse * inverse_b);
+    const double impulse = detail::normal_impulse(approach, inverse_a, inverse_b, restitution);
+    detail::apply_impulse(a.velocity, b.velocity, normal, impulse, inverse_a, inverse_b);
     if (def.collapse_time > 0.0) {
       last_contact_times[i] = t;
       last_contact_times[j] = t;
@@ -980,17 +981,14 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   const bool in_bowl = detail::inside_arc(walls[wall], a.position);
   bool resolved = false;
   if (approach > 0.0 || (in_bowl && now.hit)) {
-    const double restitution =
-        def.collapse_time > 0.0 && last_contact_times[i] > t - def.collapse_time
-            ? 1.0
-            : restitution_of(i);
+    const double restitution = collided_recently(i, t) ? 1.0 : restitution_of(i);
     double speed_change = 0.0;
     if (in_bowl) {
       const detail::BowlBounce bounce = detail::bounce_inside_arc(a.velocity, normal, restitution);
       a.velocity = bounce.velocity;
       speed_change = bounce.normal_speed_change;
     } else {
-      speed_change = (1.0 + restitution) * approach;
+      speed_change = detail::wall_speed_change(approach, restitution);
       a.velocity -= normal * speed_change;
     }
     if (def.collapse_time > 0.0) last_contact_times[i] = t;

@@ -280,6 +280,8 @@ struct World::Impl {
   // around it (clear_behind; docs/engine.md, "Crossing a cell").
   void cross_cell(std::uint32_t ball, std::uint32_t side, double t, bool clear_behind);
   [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
+  // Whether a ball collided less than def.collapse_time before t (always false when it is 0).
+  [[nodiscard]] bool collided_recently(std::uint32_t ball, double t) const;
 };
 
 }  // namespace carom

@@ -1,5 +1,5 @@
 // carom internal: when and through which side a ball's centre leaves its grid cell, for
-// prediction (world_engine.cpp). Written without branches (the signs of a ball's velocity are
+// prediction (prediction_steps.hpp). Written without branches (the signs of a ball's velocity are
 // random, and a mispredicted branch costs more than computing both axes), with both axes in one
 // SSE2 vector where the CPU has it (every x86-64): one division for the two.
 #pragma once

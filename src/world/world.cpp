@@ -1,4 +1,5 @@
-// carom::World's public surface: handles, validation, queries. The engine: world_engine.cpp.
+// carom::World's public surface: handles, validation, queries. The engine: world_run.cpp and the
+// parts it calls (docs/engine.md).
 #include "carom/world.hpp"
 
 #include <algorithm>

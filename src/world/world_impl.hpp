@@ -1,5 +1,6 @@
 // carom internal: the state behind carom::World and the event-driven engine's operations.
-// The engine itself (prediction, event processing, the grid's upkeep) is in world_engine.cpp;
+// The engine itself is in parts: world_run.cpp (the event loop), world_response.cpp,
+// world_prediction.cpp with prediction_steps.hpp, world_cell_crossing.cpp, world_grid_upkeep.cpp;
 // the public API with its validation in world.cpp. Design: docs/engine.md.
 #pragma once
 
@@ -178,7 +179,7 @@ struct World::Impl {
   void load_payload(detail::ByteReader& in);
   void load_grid(detail::ByteReader& in);
 
-  // ---- engine (world_engine.cpp) ----
+  // ---- the grid's upkeep (world_grid_upkeep.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,
   // for an open world, cover every ball and wall), rebuilding it when it does not.
   void ensure_grid(Vec2 extra_point, double extra_radius);
@@ -194,17 +195,19 @@ struct World::Impl {
   // `largest`, before rounding the cell count.
   [[nodiscard]] double wanted_cell_size(double extent_x, double extent_y, std::size_t ball_total,
                                         double largest) const;
+  // Renumbers the slots cell by cell (docs/engine.md, "Memory"); changes no result.
+  void sort_by_cell();
+
+  // ---- prediction (world_prediction.cpp, prediction_steps.hpp) ----
   void predict_all();
   // After a change to one ball between runs (its place or course, or its removal): predicts that
   // ball alone, when every other ball's pending event is still valid, rather than every ball at
   // the next run (docs/world.md, "Changing balls between steps").
   void repredict_changed(std::uint32_t ball);
-  // Renumbers the slots cell by cell (docs/engine.md, "Memory"); changes no result.
-  void sort_by_cell();
   void predict(std::uint32_t ball);
-  // predict for a contact's two balls, i's slot set first (world_engine.cpp).
+  // predict for a contact's two balls, i's slot set first (world_prediction.cpp).
   void predict_both(std::uint32_t i, std::uint32_t j);
-  // predict's two parts (world_engine.cpp): the cell's exit and walls, then the balls around.
+  // predict's two parts (prediction_steps.hpp): the cell's exit and walls, then the balls around.
   struct PredictionCell {
     std::int32_t cell;
     std::int32_t cx;
@@ -215,7 +218,7 @@ struct World::Impl {
                         PredictionCell& where) const;
   void finish_prediction(bool named, detail::Event& best, const detail::SlotQuery& query,
                          const PredictionCell& where);
-  // predict's contacts with the balls around (world_engine.cpp): read from their slots by the
+  // predict's contacts with the balls around (prediction_steps.hpp): read from their slots by the
   // pair kernel (a movable ball in an interior cell), or gathered (every case).
   // (These three return whether some pair meets, at any time.)
   bool predict_named(const detail::SlotQuery& query, std::int32_t cx, std::int32_t cy,
@@ -227,8 +230,11 @@ struct World::Impl {
                         detail::Event& best) const;
   void file_prediction(detail::Event& best, bool found);
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;
+  // Brings one ball, or every ball, to time t (its position advanced along its velocity).
   void advance(std::uint32_t ball, double t);
   void synchronize(double t);
+
+  // ---- the event loop (world_run.cpp) ----
   // What a run was asked for: to reach a time (step, run_until), or a count of contacts
   // (run_collisions, whose end time is a limit).
   enum class RunGoal : std::uint8_t { time, contacts };
@@ -236,11 +242,14 @@ struct World::Impl {
   // and leaves why it returned in stop_reason. Throws InvalidArgument (naming `function`) when
   // contacts at one instant do not end.
   std::uint64_t run(const char* function, RunGoal goal, double end, std::uint64_t max_contacts);
+  // The run's watch over runs that would never end (world_run.cpp).
+  struct RunGuard;
   // Whether a stop was asked for (request_stop, or the progress callback); clears the request.
   [[nodiscard]] bool stop_asked(const RunStatus& status);
   // True only when no contact can ever happen again, by the rules in world_no_contact.cpp;
   // false means "not proven", not "a contact will happen".
   [[nodiscard]] bool no_contact_ever() const;
+  // ---- response (world_response.cpp) and cell crossing (world_cell_crossing.cpp) ----
   bool process(const detail::Event& event);  // true when a contact was resolved
   // Whether a contact's balls have moved measurably in `elapsed` (run's jam detection).
   [[nodiscard]] bool moved_measurably(const detail::Event& contact, double elapsed) const;

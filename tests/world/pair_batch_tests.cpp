@@ -71,7 +71,7 @@ void check_pair_batch_solver(void (detail::PairBatch::*solver)(double)) {
       const Vec2 s{batch.sx[k], batch.sy[k]};
       const Vec2 u{batch.ux[k], batch.uy[k]};
       const detail::Crossing expected = detail::entry_crossing(s, u, batch.reach[k], kHorizon);
-      // What prediction makes of the batch's answer (world_engine.cpp).
+      // What prediction makes of the batch's answer (prediction_steps.hpp).
       detail::Crossing got;
       if (batch.outcome(k) == detail::PairBatch::kHit) {
         got = {true, batch.t[k]};

@@ -224,7 +224,7 @@ TEST(WorldExtreme, MillionTouchingDisksCollideAndStayApartLong) {
 // jammed: no ball can move along the row unless all do, yet the engine would resolve the
 // contacts at time 0 one by one, for ever (each bounce passes the relative motion on around the
 // ring), and step(dt) never returned. The engine now counts the contacts at one instant and
-// refuses the world past 100 a ball plus 2^16 (world_engine.cpp), naming the jam.
+// refuses the world past 100 a ball plus 2^16 (engine_tuning.hpp), naming the jam.
 TEST(WorldExtreme, JammedRowOfTouchingBallsIsRefusedNotHung) {
   World world = extreme_periodic(4.0);
   for (int i = 0; i < 4; ++i) {

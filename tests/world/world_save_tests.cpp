@@ -149,7 +149,7 @@ void expect_resumes_bit_identical(const std::function<World()>& build,
 }
 
 // A gas long enough for the engine to re-order its balls by grid cell (over 2^16 events,
-// world_engine.cpp's kSortMinEvents) a few times. A loaded world stores its balls in handle
+// engine_tuning.hpp's kSortMinEvents) a few times. A loaded world stores its balls in handle
 // order, so every resumed run below continues from a different memory order than the
 // uninterrupted one, at other re-order points: the traces agree only if storage order changes
 // no result.

@@ -418,7 +418,7 @@ TEST(WorldScenario, NoBallEverLeavesAClosedBox) {
 // order (world_event.hpp) takes the pair with the lower handles first. The three balls are
 // added right to left, so that the engine's re-order by grid cell (left to right) stores them in
 // the reverse of their handle order; fast "bouncers" in a compartment of their own supply the
-// events that trigger the re-order (over 2^16 of them, world_engine.cpp's kSortMinEvents) before
+// events that trigger the re-order (over 2^16 of them, engine_tuning.hpp's kSortMinEvents) before
 // the triple meets. Were ties broken by storage place, (middle, left) would come first.
 TEST(WorldScenario, SimultaneousContactsFollowHandleOrderAfterTheBallsAreReordered) {
   WorldDef def;

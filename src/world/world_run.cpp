@@ -85,11 +85,11 @@ struct World::Impl::RunGuard {
   // (a jam).
   CAROM_ALWAYS_INLINE void after_contact(const Event& event) {
     without_contact = 0;
-    const double time = world.time;
+    const double now = world.time;
     if (world.time_too_coarse(event)) world.refuse_stalled(function, event);
-    if (pace.piling_up(time)) world.refuse_piling_up(function, event);
-    if (world.moved_measurably(event, time - motion_time)) {
-      motion_time = time;
+    if (pace.piling_up(now)) world.refuse_piling_up(function, event);
+    if (world.moved_measurably(event, now - motion_time)) {
+      motion_time = now;
       contacts_without_motion = 0;
     } else if (++contacts_without_motion > endless) {
       world.refuse_endless(function, contacts_without_motion, event);

@@ -60,15 +60,13 @@ void validate_ball_def(const char* function, const BallDef& def) {
 
 std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   if (id.is_null()) refuse(function, "id", "null", "must be a ball of this world");
-  const std::uint32_t slot =
-      id.index < slot_of_handle.size() ? slot_of_handle[id.index] : std::uint32_t{0};
-  if (id.index >= slot_of_handle.size() || !balls[slot].alive() ||
-      infos[slot].generation != id.generation) {
+  const std::optional<std::uint32_t> slot = find(id);
+  if (!slot) {
     refuse(function, "id",
            "{" + std::to_string(id.index) + ", " + std::to_string(id.generation) + "}",
            "is stale: that ball was removed (or never belonged to this world)");
   }
-  return slot;
+  return *slot;
 }
 
 std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) const {
@@ -159,19 +157,12 @@ BallId World::add_ball(const BallDef& def) {
            "the ball cannot go there: " + overlap);
   }
 
-  std::uint32_t slot = 0;
-  if (!w.free_slots.empty()) {
-    slot = w.slot_of_handle[w.free_slots.back()];
-    w.free_slots.pop_back();
-  } else {
-    if (w.balls.size() >= detail::EventQueue::kMaxBalls) refuse_too_many(kFunction, "def", "-");
-    slot = static_cast<std::uint32_t>(w.balls.size());
-    w.balls.emplace_back();
-    w.infos.emplace_back();
-    w.handle_of.push_back(slot);  // a new slot's handle index is its own
-    w.slot_of_handle.push_back(slot);
-    if (w.def.collapse_time > 0.0) w.last_contact_times.emplace_back();
+  if (w.free_handles.empty() && w.balls.size() >= detail::EventQueue::kMaxBalls) {
+    refuse_too_many(kFunction, "def", "-");
   }
+  bool grew = false;
+  const std::uint32_t slot = w.acquire(grew);
+  if (grew && w.def.collapse_time > 0.0) w.last_contact_times.emplace_back();
   BallSlot& b = w.balls[slot];
   b.position = position;
   b.velocity = def.velocity;
@@ -185,7 +176,6 @@ BallId World::add_ball(const BallDef& def) {
   }
   info.user_data = def.user_data;
   ++b.version;
-  ++w.live_count;
   w.largest_radius = std::max(w.largest_radius, def.radius);
   w.grid.insert(slot, w.grid.cell_of(position));
   w.repredict_changed(slot);
@@ -200,10 +190,7 @@ void World::remove_ball(BallId id) {
   w.species.release(b.species);
   b.species = detail::kNoSpecies;
   ++b.version;
-  std::uint32_t& generation = w.infos[slot].generation;
-  generation = generation == std::numeric_limits<std::uint32_t>::max() ? 1 : generation + 1;
-  w.free_slots.push_back(w.handle_of[slot]);
-  --w.live_count;
+  w.release(slot);
   w.repredict_changed(slot);
 }
 
@@ -212,26 +199,16 @@ void World::reserve(std::size_t count) {
     refuse_too_many("World::reserve", "count", std::to_string(count));
   }
   Impl& w = *impl_;
-  w.balls.reserve(count);
-  w.infos.reserve(count);
-  w.handle_of.reserve(count);
-  w.slot_of_handle.reserve(count);
+  w.reserve(count);
   if (w.def.collapse_time > 0.0) w.last_contact_times.reserve(count);
 }
 
-bool World::contains(BallId id) const noexcept {
-  const Impl& w = *impl_;
-  if (id.is_null() || id.index >= w.slot_of_handle.size()) return false;
-  const std::uint32_t slot = w.slot_of_handle[id.index];
-  return w.balls[slot].alive() && w.infos[slot].generation == id.generation;
-}
+bool World::contains(BallId id) const noexcept { return impl_->find(id).has_value(); }
 
 std::vector<BallId> World::balls() const {
   std::vector<BallId> ids;
   ids.reserve(impl_->live_count);
-  for (const std::uint32_t slot : impl_->slot_of_handle) {  // in handle order
-    if (impl_->balls[slot].alive()) ids.push_back(impl_->id_of(slot));
-  }
+  impl_->for_each_live([&](std::uint32_t slot) { ids.push_back(impl_->id_of(slot)); });
   return ids;
 }
 

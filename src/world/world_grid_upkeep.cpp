@@ -195,9 +195,8 @@ void World::Impl::sort_by_cell() {
   for (std::uint32_t i = 0; i < slots; ++i) {
     if (!balls[i].alive()) new_slot[i] = next++;
   }
-  detail::move_all_to(new_slot, balls, infos, handle_of);
+  renumber(new_slot);
   if (!last_contact_times.empty()) detail::move_to(last_contact_times, new_slot);
-  for (std::uint32_t k = 0; k < slots; ++k) slot_of_handle[handle_of[k]] = k;
   grid.relist();
   if (events_valid) {
     queue.use_handles(handle_of.data());

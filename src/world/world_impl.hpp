@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ball_slot.hpp"
+#include "ball_store.hpp"
 #include "carom/bounce.hpp"  // kImmovable
 #include "carom/geometry.hpp"
 #include "carom/world.hpp"
@@ -39,14 +40,6 @@ inline constexpr double kCellMargin = 1e-6;
 // "Boundaries"). Dilute cells have just under it; larger ones meet it.
 inline constexpr double kMostHysteresis = 0.1;
 
-// The rest of a ball, read only by the API (kept apart so that prediction's scans of
-// neighbours touch only the slots).
-struct BallInfo {
-  std::uint64_t user_data = 0;
-  std::uint32_t generation = 1;  // the live (or next) generation; never 0
-};
-static_assert(sizeof(BallInfo) == 16);  // with 4 bytes of padding
-
 // set_position(nearest_free)'s sweep: whether the ball touched something on its way, where it
 // then stops, and where the sweep itself put its centre at that touch.
 struct DragStop {
@@ -57,7 +50,9 @@ struct DragStop {
 
 }  // namespace detail
 
-struct World::Impl {
+// The state of a world: its balls (the store it is: slots, handles, generations, the free
+// handles), its walls, grid, queue and settings.
+struct World::Impl : detail::BallStore {
   Impl() { grid.use_slots(balls); }
   Impl(const Impl&) = delete;  // the grid names `balls` by address
   Impl& operator=(const Impl&) = delete;
@@ -66,19 +61,10 @@ struct World::Impl {
   ~Impl() = default;
 
   WorldDef def;
-  // Balls live in slots, which the engine re-orders by grid cell from time to time so that
-  // neighbours sit near each other in memory (sort_by_cell). A BallId names a handle index,
-  // which never moves: handle_of and slot_of_handle map between the two.
-  detail::BigVector<detail::BallSlot> balls;
-  detail::BigVector<detail::BallInfo> infos;  // by slot, beside balls
   detail::SpeciesTable species;
-  detail::BigVector<std::uint32_t> handle_of;       // by slot
-  detail::BigVector<std::uint32_t> slot_of_handle;  // by handle index
   // By slot, the time of each ball's latest contact: read only by inelastic collapse prevention,
   // so kept (and sized) only when def.collapse_time > 0, saving 8 bytes a ball otherwise.
   std::vector<double> last_contact_times;
-  std::vector<std::uint32_t> free_slots;  // handle indices, reused last-freed first
-  std::size_t live_count = 0;
   std::vector<detail::Wall> walls;
   std::uint32_t boundary_walls = 0;  // the box boundary's four walls come first
   PeriodicCell periodic_cell;        // the boundary of a periodic world
@@ -116,15 +102,9 @@ struct World::Impl {
   bool mover_met = false;
 
   // ---- handles ----
+  // The slot of the live ball `id` names; throws InvalidArgument (naming `function`) for a null
+  // or stale handle.
   [[nodiscard]] std::uint32_t slot_of(const char* function, BallId id) const;
-  [[nodiscard]] BallId id_of(std::uint32_t slot) const {
-    return {handle_of[slot], infos[slot].generation};
-  }
-  // Whether slot a's ball comes before slot b's in handle order (the order of ties and of
-  // anything reported per ball).
-  [[nodiscard]] bool handle_before(std::uint32_t a, std::uint32_t b) const {
-    return handle_of[a] < handle_of[b];
-  }
 
   // ---- geometry ----
   [[nodiscard]] const detail::Species& species_of(std::uint32_t ball) const {

@@ -161,8 +161,8 @@ std::string World::Impl::save_payload() const {
     out.u32(info.generation);
     if (def.collapse_time > 0.0) out.f64(last_contact_times[i]);
   }
-  out.u32(static_cast<std::uint32_t>(free_slots.size()));
-  for (const std::uint32_t slot : free_slots) out.u32(slot);
+  out.u32(static_cast<std::uint32_t>(free_handles.size()));
+  for (const std::uint32_t slot : free_handles) out.u32(slot);
 
   if (grid_valid) {
     out.vec2(grid.lower());
@@ -355,7 +355,7 @@ void World::Impl::load_payload(ByteReader& in) {
       in.inconsistent("free slot", std::to_string(slot), "must name each dead slot once");
     }
     listed[slot] = true;
-    free_slots.push_back(slot);
+    free_handles.push_back(slot);
   }
 
   // Without a grid every ball stays in no cell (a new slot's), so remove_ball's erase has nothing

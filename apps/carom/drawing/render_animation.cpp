@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
+#include <optional>
 #include <stdexcept>
-#include <system_error>
 
+#include "carom/atomic_file.hpp"
 #include "drawing/cairo_picture.hpp"
 #include "drawing/scene_picture.hpp"
 #include "drawing/trail_recorder.hpp"
-#include "system/output_file.hpp"
 #include "system/progress_bar.hpp"
 #include "system/stop_signals.hpp"
 
@@ -79,14 +78,19 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
       layout_image(style.view, request.width, request.mode == ColourMode::speed, true);
   CairoImage image(layout.width, layout.height);
 
-  // Through a link, its target is replaced and the link kept.
-  const std::string target = link_target(request.path);
-  const std::string temporary = target + ".tmp";
-  const TemporaryFileGuard guard(temporary);
-  std::error_code ignored;
+  // ffmpeg writes the video into the temporary file (TARGET.tmp beside a link's target, the link
+  // kept) that is renamed onto the target when complete.
+  std::optional<AtomicFile> video;
   try {
-    FfmpegPipe ffmpeg(request.ffmpeg, temporary, request.format, layout.width, layout.height,
-                      request.fps);
+    video.emplace(request.path,
+                  AtomicFileOptions{.temporary = TemporaryName::fixed, .sync = false});
+  } catch (const FileError& error) {
+    throw std::runtime_error("cannot write " + request.path + ": " + error.reason());
+  }
+  const TemporaryFileGuard guard(video->temporary().string());
+  {
+    FfmpegPipe ffmpeg(request.ffmpeg, video->temporary().string(), request.format, layout.width,
+                      layout.height, request.fps);
     SceneWorld scene_world = make_world(scene);
     stop_world_on_signals(scene_world.world);
     std::optional<TrailRecorder> trails;
@@ -110,18 +114,11 @@ AnimationResult render_animation(const Scene& scene, const AnimationRequest& req
     }
     bar.finish();
     ffmpeg.finish();
-  } catch (...) {
-    std::filesystem::remove(temporary, ignored);
-    throw;
   }
-  std::error_code renamed;
-  std::filesystem::rename(temporary, target, renamed);
-  if (renamed) {
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot write " + request.path +
-                             ": cannot rename its temporary file "
-                             "onto it: " +
-                             renamed.message());
+  try {
+    video->commit();
+  } catch (const FileError& error) {
+    throw std::runtime_error("cannot write " + request.path + ": " + error.reason());
   }
   return {static_cast<int>(frames), layout.width, layout.height, frames < all_frames,
           frame_time(request.until, all_frames, frames - 1)};

@@ -1,8 +1,5 @@
 #include "run/run_checkpoint.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -16,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "system/output_file.hpp"
+#include "carom/atomic_file.hpp"
 #include "system/stop_signals.hpp"
 
 namespace carom::cli {
@@ -291,43 +288,14 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
 }
 
 std::optional<std::string> write_checkpoint(const std::string& name, std::string_view bytes) {
-  // Through a link, the checkpoints rotate beside its target; the link stays.
-  const std::string path = link_target(name);
-  const std::string temporary = path + ".tmp";
-  const TemporaryFileGuard guard(temporary);
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return "cannot create " + temporary + ": " + std::strerror(errno);
-  std::size_t written = 0;
-  int error = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      error = errno;
-      break;
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  // Synced before the rename, so a power cut cannot leave the new name on unwritten data.
-  if (error == 0 && ::fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
-  std::error_code ignored;
-  if (error != 0) {
-    std::filesystem::remove(temporary, ignored);
-    return "cannot write " + temporary + ": " + std::strerror(error);
-  }
-  std::error_code renamed;
-  if (std::filesystem::exists(path, ignored)) {
-    std::filesystem::rename(path, path + ".prev", renamed);
-    if (renamed) {
-      std::filesystem::remove(temporary, ignored);
-      return "cannot rename " + path + " to " + path + ".prev: " + renamed.message();
-    }
-  }
-  std::filesystem::rename(temporary, path, renamed);
-  if (renamed) {
-    std::filesystem::remove(temporary, ignored);
-    return "cannot rename " + temporary + " to " + path + ": " + renamed.message();
+  try {
+    // Through a link, the checkpoints rotate beside its target; the link stays.
+    AtomicFile file(name, {.temporary = TemporaryName::fixed, .sync = true, .keep_previous = true});
+    const TemporaryFileGuard guard(file.temporary().string());
+    file.write(bytes);
+    file.commit();
+  } catch (const FileError& error) {
+    return "cannot write " + name + ": " + error.reason();
   }
   return std::nullopt;
 }

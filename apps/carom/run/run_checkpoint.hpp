@@ -66,9 +66,10 @@ class CheckpointError : public std::runtime_error {
 // Reads bytes written by encode_checkpoint; file names them in errors. Throws CheckpointError.
 [[nodiscard]] Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file);
 
-// Writes bytes to path + ".tmp", syncs it to the disk, then renames path (if any) to
-// path + ".prev" and the new file onto path: a complete checkpoint exists at every moment, in
-// path or, between the two renames, in path + ".prev". Returns what went wrong, or nothing.
+// Writes bytes to path + ".tmp" (beside a link's target), syncs it to the disk, then renames path
+// (if any) to path + ".prev" and the new file onto path (an AtomicFile keeping the previous one):
+// a complete checkpoint exists at every moment, in path or, between the two renames, in
+// path + ".prev". Returns what went wrong, or nothing.
 [[nodiscard]] std::optional<std::string> write_checkpoint(const std::string& path,
                                                           std::string_view bytes);
 // Reads and decodes a checkpoint file. Throws CheckpointError.

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
 #include "options/readable_number.hpp"
 #include "options/usage_error.hpp"
@@ -20,8 +21,6 @@ namespace {
 
 // Content is handed to the system in pieces of this size.
 constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
-// Links followed before giving up, as the kernel does (ELOOP).
-constexpr int kMostLinks = 40;
 
 // What a name leads to through its symbolic links.
 struct Resolved {
@@ -33,25 +32,17 @@ struct Resolved {
 
 Resolved resolve(const std::string& name) {
   Resolved r;
-  r.path = name;
-  for (int k = 0; k <= kMostLinks; ++k) {
-    if (::lstat(r.path.c_str(), &r.status) != 0) {
-      if (errno != ENOENT) r.error = errno;
-      return r;
-    }
-    if (!S_ISLNK(r.status.st_mode)) {
-      r.exists = true;
-      return r;
-    }
-    std::error_code error;
-    const std::filesystem::path next = std::filesystem::read_symlink(r.path, error);
-    if (error) {
-      r.error = error.value();
-      return r;
-    }
-    r.path = next.is_absolute() ? next : r.path.parent_path() / next;
+  std::error_code error;
+  r.path = follow_links(name, error);
+  if (error) {
+    r.error = error.value();
+    return r;
   }
-  r.error = ELOOP;
+  if (::lstat(r.path.c_str(), &r.status) != 0) {
+    if (errno != ENOENT) r.error = errno;
+    return r;
+  }
+  r.exists = true;
   return r;
 }
 
@@ -113,15 +104,14 @@ OutputFile::~OutputFile() { discard(); }
 void OutputFile::discard() {
   if (fd_ >= 0 && owns_fd_) ::close(fd_);
   fd_ = -1;
-  if (!temporary_.empty()) ::unlink(temporary_.c_str());
-  temporary_.clear();
+  file_.reset();  // removes the temporary of a file not committed
   guard_ = TemporaryFileGuard();
 }
 
 std::optional<std::string> OutputFile::open(const std::string& name) {
   discard();
   name_ = name;
-  error_ = 0;
+  failure_.clear();
   buffer_.clear();
   if (name == kStandardOutput) {
     fd_ = STDOUT_FILENO;
@@ -131,60 +121,58 @@ std::optional<std::string> OutputFile::open(const std::string& name) {
   if (name.empty()) return std::string("the file name is empty");
   const Resolved r = resolve(name);
   if (auto problem = refusal(r)) return name + " " + *problem;
-  owns_fd_ = true;
   if (r.exists && written_directly(r.status)) {
+    owns_fd_ = true;
     fd_ = S_ISSOCK(r.status.st_mode) ? connect_socket(r.path)
                                      : ::open(r.path.c_str(), O_WRONLY | O_CLOEXEC);
     if (fd_ < 0) return "cannot open " + name + ": " + std::strerror(errno);
     return std::nullopt;
   }
-  target_ = r.path.string();
-  temporary_ = target_ + ".tmp";
-  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd_ < 0) {
-    const int error = errno;
-    temporary_.clear();
-    return "cannot create " + name + " (its temporary file " + target_ +
-           ".tmp): " + std::strerror(error);
+  try {
+    file_.emplace(name, AtomicFileOptions{.temporary = TemporaryName::fixed, .sync = false});
+  } catch (const FileError& error) {
+    return "cannot write " + name + ": " + error.reason();
   }
-  guard_ = TemporaryFileGuard(temporary_);
-  // A file replaced keeps its permissions.
-  if (r.exists) static_cast<void>(::fchmod(fd_, r.status.st_mode & 07777));
+  guard_ = TemporaryFileGuard(file_->temporary().string());
   return std::nullopt;
 }
 
 void OutputFile::flush() {
-  if (error_ == 0 && !buffer_.empty() && !write_all(fd_, buffer_))
-    error_ = errno != 0 ? errno : EIO;
+  if (failure_.empty() && !buffer_.empty()) {
+    if (file_) {
+      try {
+        file_->write(buffer_);
+      } catch (const FileError& error) {
+        failure_ = error.reason();
+      }
+    } else if (!write_all(fd_, buffer_)) {
+      failure_ = std::strerror(errno != 0 ? errno : EIO);
+    }
+  }
   buffer_.clear();
 }
 
 void OutputFile::write(std::string_view content) {
-  if (fd_ < 0 || error_ != 0) return;
+  if (!is_open() || !failure_.empty()) return;
   buffer_.append(content);
   if (buffer_.size() >= kBufferBytes) flush();
 }
 
 std::optional<std::string> OutputFile::commit() {
-  if (fd_ < 0) return "cannot write " + name_ + ": it is not open";
+  if (!is_open()) return "cannot write " + name_ + ": it is not open";
   flush();
-  int error = error_;
-  if (owns_fd_ && ::close(fd_) != 0 && error == 0) error = errno;
-  fd_ = -1;
-  if (error != 0) {
-    discard();
-    return "cannot write " + name_ + ": " + std::strerror(error);
-  }
-  if (!temporary_.empty()) {
-    if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
-      error = errno;
-      discard();
-      return "cannot write " + name_ +
-             ": cannot rename its temporary file onto it: " + std::strerror(error);
+  if (file_ && failure_.empty()) {
+    try {
+      file_->commit();
+    } catch (const FileError& error) {
+      failure_ = error.reason();
     }
-    temporary_.clear();
-    guard_ = TemporaryFileGuard();
   }
+  if (fd_ >= 0 && owns_fd_ && ::close(std::exchange(fd_, -1)) != 0 && failure_.empty()) {
+    failure_ = std::strerror(errno);
+  }
+  discard();
+  if (!failure_.empty()) return "cannot write " + name_ + ": " + failure_;
   return std::nullopt;
 }
 

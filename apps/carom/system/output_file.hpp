@@ -2,9 +2,10 @@
 //
 // What a name gets, decided once when it is opened:
 // - "-": standard output.
-// - A missing file or a plain one, reached through any symbolic links: the content goes to
-//   TARGET.tmp beside the final target and is renamed onto it only when complete, so the file
-//   holds its old content or all of the new one; the links stay links.
+// - A missing file or a plain one, reached through any symbolic links: an AtomicFile
+//   (carom/atomic_file.hpp) with the fixed name TARGET.tmp beside the final target, renamed onto
+//   it only when complete (not synced: an output is remade by running again), so the file holds
+//   its old content or all of the new one; the links stay links.
 // - A character device (/dev/null, a terminal), a FIFO or a Unix socket: written directly, as a
 //   shell's `>` would; renaming onto them would replace them with a plain file.
 // - A folder: refused.
@@ -16,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "carom/atomic_file.hpp"
 #include "system/stop_signals.hpp"
 
 namespace carom::cli {
@@ -33,7 +35,7 @@ class OutputFile {
 
   // Returns what went wrong, or nothing. A FIFO blocks here until a reader opens it.
   [[nodiscard]] std::optional<std::string> open(const std::string& name);
-  [[nodiscard]] bool is_open() const noexcept { return fd_ >= 0; }
+  [[nodiscard]] bool is_open() const noexcept { return file_.has_value() || fd_ >= 0; }
   // Appends (buffered); a failure is remembered and reported by commit().
   void write(std::string_view content);
   // Flushes, closes and (for a file) renames; returns what went wrong, or nothing.
@@ -43,13 +45,12 @@ class OutputFile {
   void flush();
   void discard();
 
-  std::string name_;          // as the user gave it
-  std::string target_;        // the file the rename lands on (a link's target)
-  std::string temporary_;     // empty when written directly
-  TemporaryFileGuard guard_;  // removes temporary_ at a second Ctrl-C
-  int fd_ = -1;
-  bool owns_fd_ = false;  // false for standard output
-  int error_ = 0;         // the first write's errno that failed
+  std::string name_;                // as the user gave it
+  std::optional<AtomicFile> file_;  // a plain file, replaced when committed
+  TemporaryFileGuard guard_;        // removes file_'s temporary at a second Ctrl-C
+  int fd_ = -1;                     // written directly: standard output, a device, FIFO, socket
+  bool owns_fd_ = false;            // false for standard output
+  std::string failure_;             // the first write's failure; empty while none
   std::string buffer_;
 };
 

@@ -155,8 +155,8 @@ struct Scene {
 
 // The scene as JSON text (ends with a newline). parse_scene(to_json_text(s)) == s, bit for bit.
 [[nodiscard]] std::string to_json_text(const Scene& scene);
-// Writes to_json_text(scene) to path (directly; callers wanting atomic replacement write the
-// text themselves). Throws SceneError if the file cannot be written.
+// Writes to_json_text(scene) to path atomically (write_file_atomically, carom/atomic_file.hpp):
+// the file holds its old content or all of the new one. Throws SceneError if it cannot be written.
 void save_scene(const Scene& scene, const std::filesystem::path& path);
 
 // ---- building ----

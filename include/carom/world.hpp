@@ -258,8 +258,9 @@ class World {
   // overlaps in a file edited by hand. Streams must be opened in binary mode.
   void save(std::ostream& out) const;
   [[nodiscard]] static World load(std::istream& in);
-  // The same through a file. save writes a temporary file beside `path`, syncs it to the disk and
-  // renames it onto `path`, so the file holds the old save or all of the new one, never half.
+  // The same through a file. save is write_file_atomically (carom/atomic_file.hpp): a temporary
+  // file beside `path` (beside a link's target), synced and renamed onto it, so the file holds the
+  // old save or all of the new one, never half. A failure throws InvalidArgument naming `path`.
   void save(const std::filesystem::path& path) const;
   [[nodiscard]] static World load(const std::filesystem::path& path);
 

@@ -1,12 +1,10 @@
 // Writing a scene as JSON. Doubles are written in their shortest round-trip form (std::to_chars),
 // always with a '.' or an exponent so that they read back as doubles ("-0.0" stays negative
 // zero), hence parse_scene(to_json_text(s)) gives s back bit for bit.
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "carom/atomic_file.hpp"
 #include "carom/scene.hpp"
 #include "scene_geometry.hpp"
 
@@ -158,15 +156,11 @@ std::string to_json_text(const Scene& scene) {
 }
 
 void save_scene(const Scene& scene, const std::filesystem::path& path) {
-  const std::string text = to_json_text(scene);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    throw SceneError(
-        {path.string(), 0, 0, "", "", std::string("cannot write: ") + std::strerror(errno), ""});
+  try {
+    write_file_atomically(path, to_json_text(scene));
+  } catch (const FileError& error) {
+    throw SceneError({path.string(), 0, 0, "", "", error.reason(), ""});
   }
-  out << text;
-  out.close();
-  if (!out) throw SceneError({path.string(), 0, 0, "", "", "cannot write", ""});
 }
 
 }  // namespace carom

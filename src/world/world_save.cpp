@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "atomic_write.hpp"
+#include "carom/atomic_file.hpp"
 #include "carom/error.hpp"
 #include "core/validate.hpp"
 #include "save_format.hpp"
@@ -208,7 +208,11 @@ void World::save(std::ostream& out) const {
 }
 
 void World::save(const std::filesystem::path& path) const {
-  detail::write_file_atomically("World::save", path, framed(impl_->save_payload()));
+  try {
+    write_file_atomically(path, framed(impl_->save_payload()));
+  } catch (const FileError& error) {
+    throw InvalidArgument("World::save", "path", path.string(), error.reason());
+  }
 }
 
 // ---- reading ---------------------------------------------------------------------------------

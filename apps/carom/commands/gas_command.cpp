@@ -9,6 +9,7 @@
 #include "gas/gas_report.hpp"
 #include "gas/gas_session.hpp"
 #include "options/exit_codes.hpp"
+#include "system/output_file.hpp"
 #include "system/progress_bar.hpp"
 #include "system/stop_signals.hpp"
 

@@ -20,6 +20,25 @@ std::string cache_text(std::uint64_t bytes) {
   return fmt::format("{} B", bytes);
 }
 
+// The middle value (the mean of the middle two for an even count); NaN for none.
+double median_of(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
+}
+
+// The report's last two lines: the build its figures come from, and the machine.
+std::string build_and_machine_text(const std::string& build_type, const std::string& compiler,
+                                   const MachineInfo& machine) {
+  std::string out = fmt::format("  build: {}, {}\n",
+                                build_type.empty() ? "(no build type)" : build_type, compiler);
+  out += fmt::format("  machine: {}, {} logical CPUs; caches L1d {}, L2 {}, L3 {}\n", machine.cpu,
+                     machine.logical_cpus, cache_text(machine.l1d_cache_bytes),
+                     cache_text(machine.l2_cache_bytes), cache_text(machine.l3_cache_bytes));
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> BenchOutcome::repetition_nanoseconds_per_collision() const {
@@ -29,13 +48,6 @@ std::vector<double> BenchOutcome::repetition_nanoseconds_per_collision() const {
   out.reserve(repetitions.size());
   for (const double seconds : repetitions) out.push_back(seconds * 1e9 / each);
   return out;
-}
-
-double median_of(std::vector<double> values) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
-  const std::size_t middle = values.size() / 2;
-  return values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
 }
 
 double BenchOutcome::median_nanoseconds_per_collision() const {
@@ -79,16 +91,6 @@ std::string bench_text(const BenchOutcome& o) {
                      o.repetitions.size() > 1 ? "s" : "", rounded(o.energy_drift),
                      rounded(o.momentum_drift));
   out += build_and_machine_text(o.build_type, o.compiler, o.machine);
-  return out;
-}
-
-std::string build_and_machine_text(const std::string& build_type, const std::string& compiler,
-                                   const MachineInfo& machine) {
-  std::string out = fmt::format("  build: {}, {}\n",
-                                build_type.empty() ? "(no build type)" : build_type, compiler);
-  out += fmt::format("  machine: {}, {} logical CPUs; caches L1d {}, L2 {}, L3 {}\n", machine.cpu,
-                     machine.logical_cpus, cache_text(machine.l1d_cache_bytes),
-                     cache_text(machine.l2_cache_bytes), cache_text(machine.l3_cache_bytes));
   return out;
 }
 

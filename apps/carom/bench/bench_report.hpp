@@ -53,14 +53,7 @@ struct BenchOutcome {
   }
 };
 
-// The middle value (the mean of the middle two for an even count); NaN for none.
-[[nodiscard]] double median_of(std::vector<double> values);
-
 [[nodiscard]] std::string bench_text(const BenchOutcome& outcome);
-// The report's last two lines: the build its figures come from, and the machine.
-[[nodiscard]] std::string build_and_machine_text(const std::string& build_type,
-                                                 const std::string& compiler,
-                                                 const MachineInfo& machine);
 // Every field above and the three derived rates, numbers with every digit.
 [[nodiscard]] nlohmann::ordered_json bench_json(const BenchOutcome& outcome);
 

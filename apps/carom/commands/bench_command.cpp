@@ -13,7 +13,6 @@
 #include <string_view>
 #include <vector>
 
-#include "bench/bench_goals.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/machine_info.hpp"
 #include "carom/science/hard_disk_gas.hpp"
@@ -21,7 +20,6 @@
 #include "options/option_value.hpp"
 #include "options/readable_number.hpp"
 #include "options/usage_error.hpp"
-#include "system/child_process.hpp"
 #include "system/stop_signals.hpp"
 #include "system/wall_clock.hpp"
 
@@ -52,7 +50,6 @@ struct BenchOptions {
   std::string seed = "1";
   std::string repeat = "1";
   bool json = false;
-  bool goals = false;
 };
 
 struct BenchSettings {
@@ -198,57 +195,9 @@ BenchOutcome measure(const BenchSettings& settings) {
   return outcome;
 }
 
-// --goals: each gas of the plan as `carom bench ... --json` in a process of its own (its memory
-// figure is then that process's peak, as when it is run alone), then the verdicts.
-int run_goals(const BenchOptions& options) {
-  // This very program (Linux): the same build measures every gas.
-  static const std::string kThisProgram = "/proc/self/exe";
-  std::vector<nlohmann::ordered_json> benches;
-  std::vector<GasFigures> gases;
-  const std::vector<GoalGas> plan = goal_plan();
-  for (std::size_t k = 0; k < plan.size(); ++k) {
-    BenchOptions one = options;
-    one.n = std::to_string(plan[k].n);
-    one.eta = readable(plan[k].eta);
-    one.collisions_per_ball = readable(plan[k].collisions_per_ball);
-    one.repeat = std::to_string(plan[k].repeats);
-    (void)parse(one);  // --seed and --equilibrate are refused here, before any gas runs
-    if (!options.json) {
-      std::cerr << "carom bench --goals: gas " << k + 1 << " of " << plan.size() << ", " << one.n
-                << " disks at eta " << one.eta << '\n';
-    }
-    std::string out;
-    try {
-      out = output_of_program(kThisProgram,
-                              {"bench", "--n", one.n, "--eta", one.eta, "--collisions-per-ball",
-                               one.collisions_per_ball, "--repeat", one.repeat, "--seed", one.seed,
-                               "--equilibrate", one.equilibrate, "--json"});
-    } catch (const std::runtime_error&) {
-      if (!StopOnSignals::requested()) throw;
-    }
-    if (StopOnSignals::requested()) {
-      std::cerr << "carom bench --goals: " << StopOnSignals::what() << " in gas " << k + 1 << " of "
-                << plan.size() << ": no verdicts\n";
-      return StopOnSignals::exit_code();
-    }
-    benches.push_back(nlohmann::ordered_json::parse(out));
-    gases.push_back(gas_figures(benches.back()));
-  }
-  const std::vector<GoalVerdict> verdicts = judge_goals(gases);
-  if (options.json) {
-    std::cout << goals_json(benches, verdicts).dump() << '\n';
-  } else {
-    std::cout << goals_text(
-        benches, verdicts,
-        build_and_machine_text(CAROM_CLI_BUILD_TYPE, CAROM_CLI_COMPILER, describe_machine()));
-  }
-  return kExitSuccess;
-}
-
 int run(const BenchOptions& options) {
   // A signal stops the gas; the figures of what ran are reported.
   const StopOnSignals stop_on_signals;
-  if (options.goals) return run_goals(options);
   const BenchSettings settings = parse(options);
   const BenchOutcome outcome = measure(settings);
   if (outcome.interrupted && outcome.collisions == 0) {
@@ -300,28 +249,22 @@ Command add_bench_command(CLI::App& app) {
       "Examples:\n"
       "  carom bench --n 10000 --eta 0.3 --collisions-per-ball 10\n"
       "  carom bench --n 100000 --eta 0.6 --collisions-per-ball 5 --seed 7 --json\n"
-      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5\n"
-      "  carom bench --goals\n\n"
-      "--goals runs, for each packing fraction (0.3, then 0.6), 10^4 disks (K 20, R 5),\n"
-      "10^5 (K 10, R 5), 10^6 (K 2, R 3) and 10^4 again, each in a process of its own,\n"
-      "and judges the world's goals on this host: at least 2.5 M collisions/s at 10^4\n"
-      "and 1.5 M at 10^5 (the median of the timed runs, 10^4's two gases pooled), 10^6\n"
-      "at most twice 10^4's median cost a collision, at most 128 bytes a ball at 10^6.\n"
-      "About half a minute; --seed and --equilibrate apply to every gas. The exit\n"
-      "status is 0 whether or not the goals are met (the verdicts are in the output).");
+      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5\n\n"
+      "The world's speed and memory goals are judged with this verb by the benchmark\n"
+      "program carom_bench_goals (docs/performance.md).");
 
   auto options = std::make_shared<BenchOptions>();
-  CLI::Option* n = bench->add_option("--n", options->n, "Number of disks, at least 2")
-                       ->type_name("N")
-                       ->capture_default_str();
-  CLI::Option* eta = bench->add_option("--eta", options->eta, "Packing fraction, in (0, 0.9069)")
-                         ->type_name("ETA")
-                         ->capture_default_str();
-  CLI::Option* per_ball = bench
-                              ->add_option("--collisions-per-ball", options->collisions_per_ball,
-                                           "Timed collisions per disk (K*N in all, rounded), > 0")
-                              ->type_name("K")
-                              ->capture_default_str();
+  bench->add_option("--n", options->n, "Number of disks, at least 2")
+      ->type_name("N")
+      ->capture_default_str();
+  bench->add_option("--eta", options->eta, "Packing fraction, in (0, 0.9069)")
+      ->type_name("ETA")
+      ->capture_default_str();
+  bench
+      ->add_option("--collisions-per-ball", options->collisions_per_ball,
+                   "Timed collisions per disk (K*N in all, rounded), > 0")
+      ->type_name("K")
+      ->capture_default_str();
   bench
       ->add_option("--equilibrate", options->equilibrate,
                    "Untimed collisions per disk before the timed run, >= 0")
@@ -330,20 +273,12 @@ Command add_bench_command(CLI::App& app) {
   bench->add_option("--seed", options->seed, "Seed of the velocities' generator")
       ->type_name("S")
       ->capture_default_str();
-  CLI::Option* repeat =
-      bench
-          ->add_option("--repeat", options->repeat,
-                       "Timed runs of K*N collisions each, one after another, >= 1")
-          ->type_name("R")
-          ->capture_default_str();
-  bench->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
   bench
-      ->add_flag("--goals", options->goals,
-                 "Run the gases of the world's speed and memory goals and judge each goal")
-      ->excludes(n)
-      ->excludes(eta)
-      ->excludes(per_ball)
-      ->excludes(repeat);
+      ->add_option("--repeat", options->repeat,
+                   "Timed runs of K*N collisions each, one after another, >= 1")
+      ->type_name("R")
+      ->capture_default_str();
+  bench->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
 
   return {bench, [options] { return run(*options); }};
 }

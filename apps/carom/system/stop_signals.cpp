@@ -25,11 +25,8 @@ struct Slot {
   std::array<char, kLongestPath + 1> path{};
 };
 std::array<Slot, kSlots> g_temporaries;
-// The child that signals are passed on to (0: none).
-std::atomic<int> g_child{0};
 
 extern "C" void on_stop_signal(int signal) {
-  if (const int child = g_child.load(); child > 0) ::kill(child, signal);
   int none = 0;
   if (g_first_signal.compare_exchange_strong(none, signal)) return;
   // A second signal: the user insists. Only async-signal-safe calls from here on.
@@ -72,10 +69,6 @@ void stop_world_on_signals(World& world, std::function<void(const RunStatus&)> p
     return StopOnSignals::requested();
   });
 }
-
-ForwardSignalsTo::ForwardSignalsTo(int pid) { g_child.store(pid); }
-
-ForwardSignalsTo::~ForwardSignalsTo() { g_child.store(0); }
 
 TemporaryFileGuard::TemporaryFileGuard(const std::string& path) {
   if (path.size() > kLongestPath) return;

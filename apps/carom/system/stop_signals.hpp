@@ -49,15 +49,4 @@ class TemporaryFileGuard {
   int slot_ = -1;
 };
 
-// A child process the signals are passed on to while the guard lives (the first signal too), so
-// that a child running a long part of the verb stops with it even when only the parent was sent
-// the signal (kill, timeout).
-class ForwardSignalsTo {
- public:
-  explicit ForwardSignalsTo(int pid);
-  ~ForwardSignalsTo();
-  ForwardSignalsTo(const ForwardSignalsTo&) = delete;
-  ForwardSignalsTo& operator=(const ForwardSignalsTo&) = delete;
-};
-
 }  // namespace carom::cli

@@ -1,6 +1,6 @@
-// carom tool: `carom bench --goals`, the world's speed and memory goals (docs/performance.md)
-// judged on the host at hand: which gases to run and in what order, and what their figures say of
-// each goal. Running the gases is bench_command.cpp's.
+// carom_bench_goals: the world's speed and memory goals (docs/performance.md) judged on the host
+// at hand: which gases to run and in what order, what their figures say of each goal, and the
+// report. Running the gases is main.cpp's, through child_process.hpp.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace carom::cli {
+namespace carom::goals {
 
 // One gas of the plan, as `carom bench --n N --eta ETA --collisions-per-ball K --repeat R` runs it.
 struct GoalGas {
@@ -22,6 +22,11 @@ struct GoalGas {
 // 10^4's figure, which 10^6's is held to, is taken both before and after it (a shared host's
 // speed drifts by a fifth within minutes, docs/performance.md).
 [[nodiscard]] std::vector<GoalGas> goal_plan();
+
+// The arguments after the tool's path that run `gas`: `bench --n ... --json`, with `seed` and
+// `equilibrate` (collisions a disk before the timed runs) as the user typed them.
+[[nodiscard]] std::vector<std::string> bench_arguments(const GoalGas& gas, const std::string& seed,
+                                                       const std::string& equilibrate);
 
 // What a gas's run gave, read from its `carom bench --json` object.
 struct GasFigures {
@@ -49,11 +54,16 @@ struct GoalVerdict {
 [[nodiscard]] std::vector<GoalVerdict> judge_goals(const std::vector<GasFigures>& gases);
 
 // `benches` are the gases' `carom bench --json` objects in the order they ran; `footer` ends the
-// text (the build and the machine).
+// text (the tool, its build and the machine: tool_text).
 [[nodiscard]] std::string goals_text(const std::vector<nlohmann::ordered_json>& benches,
                                      const std::vector<GoalVerdict>& verdicts,
                                      const std::string& footer);
 [[nodiscard]] nlohmann::ordered_json goals_json(const std::vector<nlohmann::ordered_json>& benches,
                                                 const std::vector<GoalVerdict>& verdicts);
 
-}  // namespace carom::cli
+// The report's last two lines: the tool at `tool` and the build it reported in `bench` (one of
+// its `carom bench --json` objects), then the machine it reported. A field it lacks reads
+// "unknown".
+[[nodiscard]] std::string tool_text(const std::string& tool, const nlohmann::json& bench);
+
+}  // namespace carom::goals

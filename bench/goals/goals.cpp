@@ -1,15 +1,13 @@
-#include "bench/bench_goals.hpp"
+#include "goals.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 
-#include "bench/bench_report.hpp"
-#include "options/readable_number.hpp"
-
-namespace carom::cli {
+namespace carom::goals {
 
 namespace {
 
@@ -22,6 +20,19 @@ constexpr double kSmallRate = 2.5;   // M collisions/s, at least
 constexpr double kMediumRate = 1.5;  // M collisions/s, at least
 constexpr double kLargeCostRatio = 2.0;
 constexpr double kMostBytesPerBall = 128.0;
+
+// A figure for people: six significant digits tell the story, --json gives every digit.
+std::string readable(double value) {
+  return fmt::format("{:.6g}", value + 0.0);  // + 0.0 turns -0 into 0
+}
+
+// The middle value (the mean of the middle two for an even count); NaN for none.
+double median_of(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
+}
 
 // The size "10^k" where n is a power of ten, else n itself.
 std::string size_text(std::uint64_t n) {
@@ -103,6 +114,33 @@ const nlohmann::json& field(const nlohmann::json& bench, const char* name) {
   return bench.at(name);
 }
 
+// A text field of a bench object, or "unknown".
+std::string text_of(const nlohmann::json& object, const char* name) {
+  if (!object.is_object() || !object.contains(name) || !object.at(name).is_string()) {
+    return "unknown";
+  }
+  return object.at(name).get<std::string>();
+}
+
+// A whole-number field of a bench object, or 0 where it has none.
+std::uint64_t count_of(const nlohmann::json& object, const char* name) {
+  if (!object.is_object() || !object.contains(name) || !object.at(name).is_number_integer() ||
+      object.at(name).get<std::int64_t>() < 0) {
+    return 0;
+  }
+  return object.at(name).get<std::uint64_t>();
+}
+
+// A cache's size as people write it: in MiB or KiB where it divides evenly; 0 is unknown.
+std::string cache_size_text(std::uint64_t bytes) {
+  constexpr std::pair<std::uint64_t, const char*> kUnits[] = {{1024 * 1024, "MiB"}, {1024, "KiB"}};
+  if (bytes == 0) return "unknown";
+  for (const auto& [unit, name] : kUnits) {
+    if (bytes % unit == 0) return fmt::format("{} {}", bytes / unit, name);
+  }
+  return fmt::format("{} B", bytes);
+}
+
 }  // namespace
 
 std::vector<GoalGas> goal_plan() {
@@ -116,6 +154,25 @@ std::vector<GoalGas> goal_plan() {
     plan.push_back({kSmall, eta, 20, 5});
   }
   return plan;
+}
+
+std::vector<std::string> bench_arguments(const GoalGas& gas, const std::string& seed,
+                                         const std::string& equilibrate) {
+  // Shortest round-trip text: the tool reads back exactly the plan's values.
+  return {"bench",
+          "--n",
+          std::to_string(gas.n),
+          "--eta",
+          fmt::format("{}", gas.eta),
+          "--collisions-per-ball",
+          fmt::format("{}", gas.collisions_per_ball),
+          "--repeat",
+          std::to_string(gas.repeats),
+          "--seed",
+          seed,
+          "--equilibrate",
+          equilibrate,
+          "--json"};
 }
 
 GasFigures gas_figures(const nlohmann::json& bench) {
@@ -191,4 +248,20 @@ nlohmann::ordered_json goals_json(const std::vector<nlohmann::ordered_json>& ben
   return out;
 }
 
-}  // namespace carom::cli
+std::string tool_text(const std::string& tool, const nlohmann::json& bench) {
+  const std::string build_type = text_of(bench, "build_type");
+  std::string out = fmt::format("  build: {}, {} (the tool {})\n",
+                                build_type.empty() ? "(no build type)" : build_type,
+                                text_of(bench, "compiler"), tool);
+  const nlohmann::json none;
+  const nlohmann::json& machine =
+      bench.is_object() && bench.contains("machine") ? bench.at("machine") : none;
+  out += fmt::format("  machine: {}, {} logical CPUs; caches L1d {}, L2 {}, L3 {}\n",
+                     text_of(machine, "cpu"), count_of(machine, "logical_cpus"),
+                     cache_size_text(count_of(machine, "l1d_cache_bytes")),
+                     cache_size_text(count_of(machine, "l2_cache_bytes")),
+                     cache_size_text(count_of(machine, "l3_cache_bytes")));
+  return out;
+}
+
+}  // namespace carom::goals

@@ -1,6 +1,6 @@
-// `carom bench --goals`: the plan of gases, the verdicts their figures give (each limit on both
-// sides), the reports, and the child process each gas runs in. The gases themselves take about
-// a minute, so the whole verb is run by hand (docs/performance.md), not here.
+// carom_bench_goals: the plan of gases, the arguments each runs with, the verdicts their figures
+// give (each limit on both sides) and the reports. The gases themselves take about a minute, so
+// the program is run end to end with a stand-in for the tool (goals_program_tests.sh).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -10,11 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "bench/bench_goals.hpp"
-#include "run_tool.hpp"
-#include "system/child_process.hpp"
+#include "goals.hpp"
 
-namespace carom::cli::test {
+namespace carom::goals::test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -47,6 +45,23 @@ TEST(BenchGoals, PlanRunsEachDensitysSizesWithTenThousandBeforeAndAfterTheMillio
     EXPECT_GT(plan[k].collisions_per_ball, 0.0);
     EXPECT_GE(plan[k].repeats, 3U);  // a median of at least three
   }
+}
+
+TEST(BenchGoals, EachGasRunsAsTheToolsBenchWithTheUsersSeedAndEquilibration) {
+  const std::vector<GoalGas> plan = goal_plan();
+  EXPECT_EQ(bench_arguments(plan[0], "7", "0.5"),
+            (std::vector<std::string>{"bench", "--n", "10000", "--eta", "0.3",
+                                      "--collisions-per-ball", "20", "--repeat", "5", "--seed", "7",
+                                      "--equilibrate", "0.5", "--json"}));
+  const std::vector<std::string> large = bench_arguments(plan[6], "1", "2");
+  EXPECT_EQ(large[2], "1000000");
+  EXPECT_EQ(large[4], "0.6");
+  EXPECT_EQ(large[6], "2");
+  EXPECT_EQ(large[8], "3");
+  // The values are read back exactly, whatever they are.
+  const std::vector<std::string> odd = bench_arguments({12345, 0.1 + 0.2, 2.5, 4}, "1", "2");
+  EXPECT_EQ(std::stod(odd[4]), 0.1 + 0.2);
+  EXPECT_EQ(odd[6], "2.5");
 }
 
 TEST(BenchGoals, FiguresThatMeetEveryGoalAreJudgedSo) {
@@ -170,50 +185,26 @@ TEST(BenchGoals, ReportsSayWhichGoalsAreMet) {
   EXPECT_EQ(goals_json(benches_of(all_met()), judged(all_met()))["all_met"], true);
 }
 
-TEST(ChildProcess, ReturnsWhatTheProgramWroteHoweverLong) {
-  EXPECT_EQ(output_of_program("/bin/sh", {"-c", "printf 'measured %s' \"$0\"", "gas"}),
-            "measured gas");
-  // More than a pipe holds at once (64 KiB on Linux): the parent reads while the child writes.
-  const std::string out =
-      output_of_program("/bin/sh", {"-c",
-                                    "i=0; while [ $i -lt 3000 ]; do printf '%0100d' $i; "
-                                    "i=$((i + 1)); done"});
-  ASSERT_EQ(out.size(), 300'000U);
-  EXPECT_EQ(out.substr(out.size() - 4), "2999");
-}
-
-TEST(ChildProcess, AFailingOrKilledOrMissingProgramIsAnError) {
-  EXPECT_THAT(
-      [] {
-        (void)output_of_program("/bin/sh", {"-c", "exit 3"});
-      },
-      ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("exit status 3")));
-  EXPECT_THAT(
-      [] {
-        (void)output_of_program("/bin/sh", {"-c", "kill -9 $$"});
-      },
-      ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("signal 9")));
-  EXPECT_THAT([] { (void)output_of_program("/nonexistent/carom", {}); },
-              ::testing::ThrowsMessage<std::runtime_error>(HasSubstr("exit status 127")));
-}
-
-TEST(BenchGoalsTool, GoalsTakeNoGasOfTheirOwn) {
-  for (const char* option : {"--n", "--eta", "--collisions-per-ball", "--repeat"}) {
-    const ToolRun run = run_carom({"bench", "--goals", option, "5"});
-    EXPECT_EQ(run.exit_code, 2) << option;
-    EXPECT_THAT(run.err, HasSubstr("--goals")) << option;
-    EXPECT_THAT(run.err, HasSubstr(option)) << option;
-    EXPECT_EQ(run.out, "") << option;
-  }
-}
-
-TEST(BenchGoalsTool, ABadSeedIsRefusedBeforeAnyGasRuns) {
-  const ToolRun run = run_carom({"bench", "--goals", "--seed", "x"});
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_THAT(run.err, HasSubstr("--seed"));
-  EXPECT_THAT(run.err, ::testing::Not(HasSubstr("gas 1 of")));
-  EXPECT_EQ(run.out, "");
+TEST(BenchGoals, TheFooterNamesTheToolItsBuildAndTheMachineItReported) {
+  const nlohmann::json bench = {{"n", 10000},
+                                {"build_type", "Release"},
+                                {"compiler", "GNU 12.2.0"},
+                                {"machine",
+                                 {{"cpu", "Test CPU"},
+                                  {"logical_cpus", 2},
+                                  {"l1d_cache_bytes", 49152},
+                                  {"l2_cache_bytes", 2097152},
+                                  {"l3_cache_bytes", 0}}}};
+  EXPECT_EQ(tool_text("build/release/apps/carom/carom", bench),
+            "  build: Release, GNU 12.2.0 (the tool build/release/apps/carom/carom)\n"
+            "  machine: Test CPU, 2 logical CPUs; caches L1d 48 KiB, L2 2 MiB, L3 unknown\n");
+  nlohmann::json bare = bench;
+  bare["build_type"] = "";
+  bare.erase("machine");
+  EXPECT_EQ(tool_text("carom", bare),
+            "  build: (no build type), GNU 12.2.0 (the tool carom)\n"
+            "  machine: unknown, 0 logical CPUs; caches L1d unknown, L2 unknown, L3 unknown\n");
 }
 
 }  // namespace
-}  // namespace carom::cli::test
+}  // namespace carom::goals::test

@@ -49,8 +49,8 @@ constexpr std::size_t kMaxCalls = 48;
 constexpr std::size_t kMaxBalls = 24;
 // Contacts an input may resolve: the call that reaches the count is stopped there (through the
 // stop condition) and the input ends. A ball of radius 10⁻⁶ rattling between a box's corner and
-// an immovable ball set against it makes millions of real contacts a time unit (sessions 6 and
-// 7, seeds 48 and 51), and light balls between heavy ones in a small periodic cell 10⁵ a call
+// an immovable ball set against it makes millions of real contacts a time unit, and light balls
+// between heavy ones in a small periodic cell 10⁵ a call
 // (10 s an input under the sanitizers): valid physics whose cost is only the
 // count, which ended fuzz runs on their time limit. Ordinary inputs resolve a few thousand.
 constexpr std::uint64_t kMaxContacts = 50'000;

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
 
 #include "ball_grid.hpp"
+#include "carom/lattice.hpp"
 #include "scene_check.hpp"
 #include "scene_geometry.hpp"
 
@@ -48,40 +48,6 @@ double normal(std::mt19937_64& random) {
   return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
 }
 
-// Triangular lattice of `rows` rows of `columns` sites (odd rows shifted half a spacing).
-struct Lattice {
-  std::uint64_t columns = 0;
-  std::uint64_t rows = 0;
-  double nearest = 0.0;  // smallest distance between sites (images included when periodic)
-};
-
-// The smallest distance between two sites of a columns × rows lattice with spacings ax, ay.
-double lattice_nearest(std::uint64_t columns, std::uint64_t rows, double ax, double ay,
-                       bool periodic, Vec2 size) {
-  constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  double nearest = kInfinity;
-  if (columns > 1 || periodic) nearest = std::min(nearest, columns > 1 ? ax : size.x);
-  if (rows > 1) nearest = std::min(nearest, std::hypot(ax / 2.0, ay));
-  if (rows > 2 || (periodic && rows == 2)) nearest = std::min(nearest, 2.0 * ay);
-  if (periodic && rows == 1) nearest = std::min(nearest, size.y);
-  return nearest;
-}
-
-// Of the lattices with at least n sites that fit `span` (the room for centres), the one whose
-// sites lie farthest apart. A periodic lattice needs an even number of rows to tile the cell.
-Lattice best_lattice(std::uint64_t n, Vec2 span, bool periodic) {
-  Lattice best;
-  for (std::uint64_t columns = 1; columns <= n; ++columns) {
-    std::uint64_t rows = (n + columns - 1) / columns;
-    if (periodic && rows > 1 && rows % 2 == 1) ++rows;
-    const double ax = span.x / static_cast<double>(columns);
-    const double ay = span.y / static_cast<double>(rows);
-    const double nearest = lattice_nearest(columns, rows, ax, ay, periodic, span);
-    if (nearest > best.nearest) best = {columns, rows, nearest};
-  }
-  return best;
-}
-
 double generator_radius(const SceneGenerator& g, const Region& region) {
   if (g.radius) return *g.radius;
   const Vec2 size = region.upper - region.lower;
@@ -99,35 +65,24 @@ std::vector<Vec2> lattice_positions(const SceneGenerator& g, std::size_t index,
   if (!(span.x > 0.0 && span.y > 0.0)) {
     refuse(index, "a ball of radius " + number_text(radius) + " does not fit in the region");
   }
-  const Lattice lattice = best_lattice(g.count, span, region.periodic);
+  const Vec2 origin = region.periodic ? region.lower : region.lower + Vec2{radius, radius};
+  const TriangularLattice lattice =
+      best_triangular_lattice(g.count, origin, span, region.periodic, LatticeSearch::by_columns);
+  const double nearest = lattice.nearest();
   const double needed = 2.0 * radius * (1.0 + kLatticeSlack);
-  if (g.count > 1 && lattice.nearest < needed) {
+  if (g.count > 1 && nearest < needed) {
     // The lattice scales with the balls' size: fraction·(nearest/diameter)² is the most it holds.
-    const double most =
-        fraction * (lattice.nearest / (2.0 * radius)) * (lattice.nearest / (2.0 * radius));
+    const double most = fraction * (nearest / (2.0 * radius)) * (nearest / (2.0 * radius));
     refuse(index, std::to_string(g.count) + " balls of radius " + number_text(radius) +
                       " (packing fraction " + number_text(fraction) +
                       ") do not fit on a triangular lattice in this region: its sites would be " +
-                      number_text(lattice.nearest) + " apart, less than a diameter; at most " +
+                      number_text(nearest) + " apart, less than a diameter; at most " +
                       "packing fraction " + number_text(most) + " can be placed");
   }
-  const double ax = span.x / static_cast<double>(lattice.columns);
-  const double ay = span.y / static_cast<double>(lattice.rows);
-  const Vec2 origin = region.periodic ? region.lower : region.lower + Vec2{radius, radius};
-  // Periodic sites start a quarter spacing in; a rectangle's the same, which keeps the odd rows'
-  // last site (shifted by half) inside.
-  const std::uint64_t sites = lattice.columns * lattice.rows;
   std::vector<Vec2> positions;
   positions.reserve(static_cast<std::size_t>(g.count));
   for (std::uint64_t i = 0; i < g.count; ++i) {
-    // Spread the n balls evenly over the sites when there are more sites than balls.
-    const std::uint64_t site = static_cast<std::uint64_t>(
-        static_cast<double>(i) * static_cast<double>(sites) / static_cast<double>(g.count));
-    const std::uint64_t row = site / lattice.columns;
-    const std::uint64_t column = site % lattice.columns;
-    const double shift = row % 2 == 1 ? 0.75 : 0.25;
-    positions.push_back(origin + Vec2{(static_cast<double>(column) + shift) * ax,
-                                      (static_cast<double>(row) + 0.5) * ay});
+    positions.push_back(lattice.site(lattice.spread(i, g.count)));
   }
   return positions;
 }

@@ -15,9 +15,6 @@ namespace carom::scene_detail {
 inline constexpr double kRandomPlacementLimit = 0.5;
 // Tries per ball before random placement gives up.
 inline constexpr int kRandomPlacementTries = 10'000;
-// Lattice sites must be this much (relative) more than a diameter apart, so that positions
-// rounded to doubles never overlap by a rounding.
-inline constexpr double kLatticeSlack = 1e-9;
 
 // The balls of generator `index`, placed so as to overlap none of `existing` (the balls already
 // placed, explicit or generated) nor each other. Throws PathedSceneError (generators[index]).

@@ -1,72 +1,47 @@
 #include "carom/science/hard_disk_gas.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "carom/error.hpp"
+#include "carom/number_text.hpp"
+
 namespace carom::science {
-namespace {
-
-// The smallest distance between two sites of a triangular lattice of rows × columns sites that
-// tiles a periodic square of side `side`, periodic images included.
-double nearest_site_distance(double side, std::uint64_t columns, std::uint64_t rows) {
-  const double across = side / static_cast<double>(columns);  // along a row
-  const double up = side / static_cast<double>(rows);         // between rows
-  // The lattice's vectors are i·(across, 0) + j·(across/2, up): the shortest are along a row,
-  // to the rows above and below (half a spacing to either side), and two rows up.
-  double nearest = std::min({across, std::hypot(across / 2.0, up), 2.0 * up});
-  // With an odd number of rows the last row and the first (its image above) are both unshifted,
-  // so a site has a neighbour straight above it.
-  if (rows % 2 == 1) nearest = std::min(nearest, up);
-  return nearest;
-}
-
-Vec2 site_position(const HardDiskLayout& layout, std::uint64_t site) {
-  const std::uint64_t row = site / layout.columns;
-  const std::uint64_t column = site % layout.columns;
-  const double across = layout.side / static_cast<double>(layout.columns);
-  const double up = layout.side / static_cast<double>(layout.rows);
-  // A quarter spacing in from the left keeps shifted rows inside [0, side) as well.
-  const double shift = row % 2 == 1 ? 0.75 : 0.25;
-  return {(static_cast<double>(column) + shift) * across, (static_cast<double>(row) + 0.5) * up};
-}
-
-// The site of disk i when n disks share `sites` sites, the empty ones spread evenly.
-std::uint64_t site_of(std::uint64_t i, std::uint64_t n, std::uint64_t sites) {
-  // sites < 2n (a lattice has fewer than one row of empty sites), so i·sites < 2n² fits in 64
-  // bits for every n below 2^31.
-  return i * sites / n;
-}
-
-}  // namespace
 
 HardDiskLayout hard_disk_layout(std::uint64_t n, double eta) {
+  if (n < 1 || n >= kMaxHardDisks) {
+    throw InvalidArgument("science::hard_disk_layout", "n", std::to_string(n),
+                          "must lie in [1, 2^31)");
+  }
+  if (!(eta > 0.0 && std::isfinite(eta))) {
+    throw InvalidArgument("science::hard_disk_layout", "eta", number_text(eta),
+                          "must be a finite number > 0");
+  }
   HardDiskLayout layout;
   layout.n = n;
   layout.eta = eta;
   const double count = static_cast<double>(n);
   layout.side = std::sqrt(count * std::numbers::pi * kDiskDiameter * kDiskDiameter / (4.0 * eta));
-  layout.nearest = -std::numeric_limits<double>::infinity();
-  // Every row count from 1 to n, each with the fewest columns that hold n sites: O(n), which is
-  // a few milliseconds for the largest worlds the tool accepts.
-  for (std::uint64_t rows = 1; rows <= n; ++rows) {
-    const std::uint64_t columns = (n + rows - 1) / rows;
-    const double nearest = nearest_site_distance(layout.side, columns, rows);
-    if (nearest > layout.nearest) {
-      layout.nearest = nearest;
-      layout.columns = columns;
-      layout.rows = rows;
-    }
-  }
+  // Every row count from 1 to n + 1, each with the fewest columns that hold n sites, odd counts
+  // included: O(n), which is a few milliseconds for the largest worlds the tool accepts.
+  const TriangularLattice lattice = best_triangular_lattice(
+      n, {0.0, 0.0}, {layout.side, layout.side}, true, LatticeSearch::by_rows);
+  layout.columns = lattice.columns;
+  layout.rows = lattice.rows;
+  layout.nearest = lattice.nearest();
   layout.densest_eta = eta * (layout.nearest / kDiskDiameter) * (layout.nearest / kDiskDiameter);
   return layout;
 }
 
+TriangularLattice HardDiskLayout::lattice() const noexcept {
+  return {{0.0, 0.0}, {side, side}, columns, rows, true};
+}
+
 World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed) {
-  const std::uint64_t sites = layout.columns * layout.rows;
+  const TriangularLattice lattice = layout.lattice();
   // First pass: the mean of the velocities the second pass will draw.
   Vec2 mean;
   {
@@ -92,7 +67,7 @@ World make_hard_disk_world(const HardDiskLayout& layout, std::uint64_t seed) {
     const double vx = normal(random);
     const double vy = normal(random);
     BallDef ball;
-    ball.position = site_position(layout, site_of(i, layout.n, sites));
+    ball.position = lattice.site(lattice.spread(i, layout.n));
     ball.velocity = Vec2{vx, vy} - mean;
     ball.radius = kDiskRadius;
     ball.mass = kDiskMass;

@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <vector>
 
+#include "carom/error.hpp"
 #include "carom/science/hard_disk_gas.hpp"
 
 namespace carom::science {
@@ -37,6 +39,24 @@ TEST(HardDiskLayout, TooDenseForTheLatticeIsSaid) {
   EXPECT_LT(layout.densest_eta, 0.9);
 }
 
+// Nine disks: three rows of three beat every even row count (the last row and the first's image
+// lie one row spacing apart, as far as the sites of a row).
+TEST(HardDiskLayout, OddRowCountsAreTried) {
+  const HardDiskLayout layout = hard_disk_layout(9, 0.3);
+  EXPECT_EQ(layout.columns, 3u);
+  EXPECT_EQ(layout.rows, 3u);
+  EXPECT_EQ(layout.nearest, layout.side / 3.0);
+  EXPECT_EQ(layout.nearest, layout.lattice().nearest());
+}
+
+TEST(HardDiskLayout, RejectsCountsAndPackingFractionsOutOfRange) {
+  EXPECT_THROW((void)hard_disk_layout(0, 0.3), InvalidArgument);
+  EXPECT_THROW((void)hard_disk_layout(kMaxHardDisks, 0.3), InvalidArgument);
+  for (const double eta : {0.0, -0.3, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW((void)hard_disk_layout(100, eta), InvalidArgument) << eta;
+  }
+}
+
 TEST(HardDiskLayout, TinyBoxIsSaid) {
   EXPECT_FALSE(hard_disk_layout(3, 0.5).box_wide_enough());
   EXPECT_TRUE(hard_disk_layout(30, 0.5).box_wide_enough());
@@ -61,6 +81,20 @@ TEST(HardDiskWorld, HoldsEveryDiskWithoutOverlapAndNoMomentum) {
 }
 
 // Velocity components have standard deviation 1, so the kinetic energy is about one per disk.
+// Disk i sits on site spread(i, n) of the layout's lattice: with more sites than disks, the
+// empty ones are spread through the box.
+TEST(HardDiskWorld, DisksSitOnTheLayoutsLattice) {
+  const HardDiskLayout layout = hard_disk_layout(491, 0.4);  // a prime: some sites stay empty
+  const TriangularLattice lattice = layout.lattice();
+  ASSERT_GT(lattice.sites(), 491u);
+  const World world = make_hard_disk_world(layout, 5);
+  const std::vector<BallId> ids = world.balls();
+  ASSERT_EQ(ids.size(), 491u);
+  for (std::uint64_t i = 0; i < ids.size(); ++i) {
+    EXPECT_EQ(world.position(ids[i]), lattice.site(lattice.spread(i, 491)));
+  }
+}
+
 TEST(HardDiskWorld, VelocitiesAreMaxwellBoltzmannWithUnitVariance) {
   const World world = world_at(20'000, 0.3, 1);
   EXPECT_NEAR(world.kinetic_energy() / 20'000.0, 1.0, 0.03);

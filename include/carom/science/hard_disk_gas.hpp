@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 
+#include "carom/lattice.hpp"
 #include "carom/world.hpp"
 
 namespace carom::science {
@@ -19,14 +20,14 @@ inline constexpr double kTriangularPackingLimit = 0.906899682117108925;
 // The World wants a periodic cell more than three diameters wide on each axis, so that the 3×3
 // block of grid cells around a ball never holds the same cell twice.
 inline constexpr double kMinPeriodicSideInDiameters = 3.0;
-// Lattice sites must be at least this much more than a diameter apart: positions are rounded to
-// doubles and the world measures gaps through the minimum image, so disks exactly a diameter
-// apart on paper could overlap by a rounding and be refused.
-inline constexpr double kLatticeSlack = 1e-9;
+// Lattice sites are at least (1 + kLatticeSlack) diameters apart (carom/lattice.hpp says why).
+using carom::kLatticeSlack;
+// hard_disk_layout takes fewer disks than this.
+inline constexpr std::uint64_t kMaxHardDisks = std::uint64_t{1} << 31U;
 
-// Where the disks start: a triangular lattice of `rows` rows of `columns` sites that tiles the
-// periodic box (odd rows shifted by half a spacing). When there are more sites than disks, the
-// empty sites are spread evenly through the lattice.
+// Where the disks start: a triangular lattice of `rows` rows of `columns` sites over the periodic
+// box (carom/lattice.hpp; an odd number of rows is allowed). When there are more sites than
+// disks, the disks are spread evenly over the sites (TriangularLattice::spread).
 struct HardDiskLayout {
   std::uint64_t n = 0;
   double eta = 0.0;   // packing fraction n·π·d²/(4·side²)
@@ -42,11 +43,14 @@ struct HardDiskLayout {
     return side > kMinPeriodicSideInDiameters * kDiskDiameter;
   }
   [[nodiscard]] bool disks_fit() const { return nearest >= kDiskDiameter * (1.0 + kLatticeSlack); }
+  // The lattice itself: disk i sits on its site lattice().spread(i, n).
+  [[nodiscard]] TriangularLattice lattice() const noexcept;
 };
 
-// The box for n disks at packing fraction eta (1 <= n < 2^31, 0 < eta), and of the triangular
-// lattices with at least n sites that tile it, the one whose sites lie farthest apart. Whether the
-// disks fit is for the caller to check (box_wide_enough, disks_fit).
+// The box for n disks at packing fraction eta, and of the triangular lattices with at least n
+// sites over it, the one whose sites lie farthest apart (best_triangular_lattice walking the row
+// counts, odd ones included). Whether the disks fit is for the caller to check (box_wide_enough,
+// disks_fit). Throws carom::InvalidArgument unless 1 <= n < kMaxHardDisks and eta is finite, > 0.
 [[nodiscard]] HardDiskLayout hard_disk_layout(std::uint64_t n, double eta);
 
 // The world of the scene: the layout must fit (both checks above true). Velocity components are

@@ -24,7 +24,6 @@ namespace carom {
 
 using detail::BallSlot;
 using detail::Event;
-using detail::EventKind;
 using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the engine's constants
 
 void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, bool clear_behind) {

@@ -22,9 +22,6 @@
 
 namespace carom {
 
-using detail::BallSlot;
-using detail::Event;
-using detail::EventKind;
 using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the engine's constants
 
 // ---- the grid -----------------------------------------------------------------------------

@@ -80,6 +80,46 @@ struct Impact {
 [[nodiscard]] Impact time_of_impact_ball_arc(const Ball& a, Vec2 velocity_a, const Arc& arc,
                                              double horizon);
 
+// ---- under a constant acceleration -----------------------------------------------------------
+
+// A ball's motion under a constant acceleration (gravity, say): its centre at time t is
+// center + velocity·t + ½·acceleration·t², and its velocity velocity + acceleration·t.
+// (A constructor rather than an aggregate: braces such as {1.0, 2.0} or {} then still name a
+// velocity, never a Motion, in calls of the straight-line queries.)
+struct Motion {
+  constexpr Motion(Vec2 velocity_, Vec2 acceleration_) noexcept
+      : velocity(velocity_), acceleration(acceleration_) {}
+  Vec2 velocity;
+  Vec2 acceleration;
+};
+
+// The time form for balls that accelerate. The gap is then a polynomial in time, of degree 2
+// against a segment's interior and 4 against a point, a ball or an arc's circle (for two balls,
+// 2 again when they share an acceleration); its first closing in [0, horizon] is found by
+// splitting time at the polynomial's turning points (from its derivatives, recursively), so that
+// each piece is monotone and holds at most one root, found by bisection with Newton steps. No
+// closing is skipped; a closing time is exact to the rounding of the gap, which is bounded from
+// its coefficients (docs/derivation.md, "Gaps that are polynomials in time").
+//
+// The conventions above hold, with one addition: a contact also counts when the two touch with
+// no normal speed and the acceleration presses them together (a ball at rest on a floor that
+// gravity pulls down is in contact now, at normal speed 0); the caller decides what such a
+// contact does (the world rests the ball on its support). A graze, touching within the rounding
+// and parting again, is no hit. Velocities at the contact are velocity + acceleration·t.
+//
+// A zero acceleration (both, for two balls) gives exactly the answer of the straight-line query.
+// Magnitudes: any finite input is scaled by powers of two (lengths to about 1, then time so that
+// the velocity's and the acceleration's contributions are about 1), which changes no rounding;
+// terms more than 2^-1000 below the largest are lost.
+[[nodiscard]] Impact time_of_impact_ball_ball(const Ball& a, const Motion& motion_a, const Ball& b,
+                                              const Motion& motion_b, double horizon);
+[[nodiscard]] Impact time_of_impact_ball_point(const Ball& a, const Motion& motion_a, Vec2 point,
+                                               double horizon);
+[[nodiscard]] Impact time_of_impact_ball_segment(const Ball& a, const Motion& motion_a,
+                                                 const Segment& segment, double horizon);
+[[nodiscard]] Impact time_of_impact_ball_arc(const Ball& a, const Motion& motion_a, const Arc& arc,
+                                             double horizon);
+
 // ---- step form (movement vectors, t in [0, 1]) -----------------------------------------------
 
 // The tutorial's "2 moving balls": A moves by move_a and B by move_b during the step. With

@@ -4,15 +4,12 @@
 #include <cmath>
 
 #include "arc_frame.hpp"
+#include "segment_frame.hpp"
 
 namespace carom {
 
 Vec2 nearest_point(const Segment& segment, Vec2 p) {
-  const Vec2 along = segment.b - segment.a;
-  const double length_sq = length_squared(along);
-  if (length_sq == 0.0) return segment.a;
-  const double fraction = std::clamp(dot(p - segment.a, along) / length_sq, 0.0, 1.0);
-  return segment.a + along * fraction;
+  return detail::nearest_on_segment(segment, p);
 }
 
 Vec2 nearest_point(const Arc& arc, Vec2 p) {

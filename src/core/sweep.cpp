@@ -8,6 +8,7 @@
 #include "arc_frame.hpp"
 #include "circle_crossing.hpp"
 #include "exact_range.hpp"
+#include "segment_frame.hpp"
 #include "validate.hpp"
 
 namespace carom {
@@ -17,8 +18,12 @@ using detail::ArcFrame;
 using detail::direction_at;
 using detail::entry_crossing;
 using detail::exit_crossing;
+using detail::nearest_on_segment;
 using detail::offset_motion;
 using detail::ScaledMotion;
+using detail::segment_fraction;
+using detail::segment_frame;
+using detail::SegmentFrame;
 
 // Argument names differ between the time form and the step form; messages use the caller's.
 struct Names {
@@ -150,29 +155,6 @@ void contact_with_segment_side(const Ball& ball, Vec2 velocity, const Segment& s
   keep_earliest(best, t, point, -outward);
 }
 
-// A segment relative to its start, halved where the differences overflow (exact for such huge
-// values), then scaled by a power of two so that its largest length is near 1.
-struct SegmentFrame {
-  Vec2 along;               // b − a, scaled
-  Vec2 offset;              // p − a, scaled
-  double radius = 0.0;      // scaled like the lengths
-  int length_exponent = 0;  // true length = scaled length·2^length_exponent
-};
-
-SegmentFrame segment_frame(const Segment& segment, Vec2 p, double radius) {
-  SegmentFrame frame{segment.b - segment.a, p - segment.a, radius, 0};
-  if (!is_finite(frame.along) || !is_finite(frame.offset)) {
-    frame = {segment.b * 0.5 - segment.a * 0.5, p * 0.5 - segment.a * 0.5, radius * 0.5, 1};
-  }
-  const int e = std::max({detail::exponent_of(frame.along), detail::exponent_of(frame.offset),
-                          detail::exponent_of(frame.radius)});
-  frame.along = detail::scaled(frame.along, -e);
-  frame.offset = detail::scaled(frame.offset, -e);
-  frame.radius = std::ldexp(frame.radius, -e);
-  frame.length_exponent += e;
-  return frame;
-}
-
 // The segment's interior for any finite input: the formulas of contact_with_segment_side in the
 // scaled frame, t scaled back by the ratio of the length and speed scales.
 void contact_with_segment_side_rescaled(const Ball& ball, Vec2 velocity, const Segment& segment,
@@ -198,43 +180,6 @@ void contact_with_segment_side_rescaled(const Ball& ball, Vec2 velocity, const S
   if (!(along_fraction >= 0.0 && along_fraction <= 1.0)) return;
   const Vec2 point = segment.a + detail::scaled(touched, frame.length_exponent);
   keep_earliest(best, t, point, -outward);
-}
-
-// Where the foot of p falls along the segment, as a fraction of a→b (not clamped); 0 for a
-// segment of zero length (or one negligible against the distance to p).
-double segment_fraction(const Segment& segment, Vec2 p) {
-  const Vec2 along = segment.b - segment.a;
-  const Vec2 offset = p - segment.a;
-  if (detail::vector_in_range(along) && detail::vector_in_range(offset)) {
-    const double length_sq = length_squared(along);
-    return length_sq > 0.0 ? dot(offset, along) / length_sq : 0.0;
-  }
-  const SegmentFrame frame = segment_frame(segment, p, 0.0);
-  const double length_sq = length_squared(frame.along);
-  if (!(length_sq > 0.0)) return 0.0;
-  const double fraction = dot(frame.offset, frame.along) / length_sq;
-  return std::isfinite(fraction) ? fraction : std::copysign(2.0, fraction);  // far beyond an end
-}
-
-Vec2 point_on_segment(const Segment& segment, double fraction) {
-  const Vec2 along = segment.b - segment.a;
-  if (is_finite(along)) {
-    const Vec2 at = segment.a + along * fraction;
-    if (is_finite(at)) [[likely]]
-      return at;
-  }
-  // Near the end of the double range a + (b − a)·f can round past the largest double (at f = 1
-  // too: the toi fuzzer's smoke run found b = (1, −max), a + (b − a) = (0, −∞)). The weighted
-  // mean of the ends cannot overflow but by a rounding, which the ends' box then takes back.
-  const Vec2 mean = segment.a * (1.0 - fraction) + segment.b * fraction;
-  return {
-      std::clamp(mean.x, std::min(segment.a.x, segment.b.x), std::max(segment.a.x, segment.b.x)),
-      std::clamp(mean.y, std::min(segment.a.y, segment.b.y), std::max(segment.a.y, segment.b.y))};
-}
-
-Vec2 nearest_on_segment(const Segment& segment, Vec2 p) {
-  if (segment.a == segment.b) return segment.a;
-  return point_on_segment(segment, std::clamp(segment_fraction(segment, p), 0.0, 1.0));
 }
 
 // From p to the segment's nearest point. For an interior nearest point the direction is the

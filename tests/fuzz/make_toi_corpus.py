@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Writes the seed corpus of carom_toi_fuzz (tests/fuzz/corpus/toi/): one file per case, the
-13 doubles of toi_fuzz.cpp's input as little-endian bit patterns. Each seed is a case worth
+17 doubles of toi_fuzz.cpp's input as little-endian bit patterns (a case of 13 leaves both
+accelerations zero). Each seed is a case worth
 starting from: ordinary hits and misses, the edges (touching, graze, coincident centres), the
-ends of the double range, and invalid input. Run it from anywhere; it rewrites the folder."""
+ends of the double range, and invalid input. Run it from anywhere; it rewrites its own cases
+and leaves the folder's other files (inputs the fuzzer found, kept by hand) alone."""
 import math
 import pathlib
 import struct
@@ -12,6 +14,7 @@ TINY = 5e-324
 PI = math.pi
 
 # name: a.x a.y a.r va.x va.y  b.x b.y b.r vb.x vb.y  horizon  arc.start arc.end
+#       [aa.x aa.y ab.x ab.y]
 CASES = {
     "head_on_hit": [0, 0, 1, 4, 0, 5, 0, 1, 0, 0, 1, 0, PI],
     "tutorial": [0, 0, 1, 6, 2, 8, 3, 1.5, -4, -1, 1, -PI / 2, PI / 2],
@@ -37,17 +40,25 @@ CASES = {
     "negative_radius": [0, 0, -1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI],
     "negative_horizon": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, -1, 0, PI],
     "arc_span_too_long": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, 7],
+    "falling_onto_floor": [0, 5, 0.5, 0, 0, -5, 0, 1, 5, 0, 2, PI, 2 * PI, 0, -9.81, 0, 0],
+    "resting_on_floor": [0, 0.5, 0.5, 0, 0, -5, 0, 1, 5, 0, 2, 0, PI, 0, -9.81, 0, 0],
+    "resting_in_bowl": [0, -2, 1, 0, 0, 0, 0, 3, 0, 0, 2, PI, 2 * PI, 0, -9.81, 0, 0],
+    "thrown_past_end": [-2, -3, 0.5, 2.5, 12, 0, 0, 1, 10, 0, 10, 0, PI, 0, -9.81, 0, 0],
+    "falling_together": [0, 2, 1, 1, 0, 0, 0, 1, 1, 0, 5, 0, PI, 0, -9.81, 0, -9.81],
+    "onto_moving_peg": [0, 10, 0.5, 0.3, 0, 0, 0, 1, 0, 1, 5, 0, PI, 0, -9.81, 0, 0],
+    "huge_acceleration": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI, -MAX, MAX, MAX, 0],
+    "tiny_acceleration": [0, 0, 1, 1, 0, 5, 3, 1, 0, 0, 1e300, 0, PI, TINY, -TINY, 0, 0],
+    "nan_acceleration": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI, math.nan, 0, 0, 0],
 }
 
 
 def main() -> None:
     folder = pathlib.Path(__file__).resolve().parent / "corpus" / "toi"
     folder.mkdir(parents=True, exist_ok=True)
-    for old in folder.iterdir():
-        old.unlink()
     for name, values in CASES.items():
-        assert len(values) == 13, name
-        (folder / name).write_bytes(struct.pack("<13d", *[float(v) for v in values]))
+        assert len(values) in (13, 17), name
+        (folder / name).write_bytes(
+            struct.pack(f"<{len(values)}d", *[float(v) for v in values]))
 
 
 if __name__ == "__main__":

@@ -3,12 +3,15 @@
 // outside its documented domain) or a valid answer: a hit with t in [0, horizon] and a unit
 // normal, or no hit; never a NaN, never a crash. It also checks the promises that tie the
 // queries together: ball–ball is symmetric, the step form is the time form with horizon 1, the
-// batch kernel answers bit for bit as the scalar one, and a segment whose ends coincide is a
-// point.
+// batch kernel answers bit for bit as the scalar one, a segment whose ends coincide is a point,
+// and a zero acceleration gives the straight-line answer. Under an acceleration, a hit at
+// ordinary magnitudes is a real touch.
 //
-// Input: up to 13 doubles, 8 bytes each, little-endian bit patterns (missing bytes read as 0):
+// Input: up to 17 doubles, 8 bytes each, little-endian bit patterns (missing bytes read as 0):
 //   a.x a.y a.radius va.x va.y  b.x b.y b.radius vb.x vb.y  horizon  arc.start arc.end
-// B's centre doubles as the point, the segment's start (vb its end) and the arc's centre.
+//   aa.x aa.y ab.x ab.y
+// B's centre doubles as the point, the segment's start (vb its end) and the arc's centre; aa and
+// ab are the accelerations of A and B.
 // Seeds: tests/fuzz/corpus/toi/ (written by tests/fuzz/make_toi_corpus.py).
 #include <algorithm>
 #include <cmath>
@@ -17,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -33,7 +37,7 @@ using carom::Impact;
 using carom::Segment;
 using carom::Vec2;
 
-constexpr std::size_t kDoubles = 13;
+constexpr std::size_t kDoubles = 17;
 
 [[noreturn]] void fail(const char* what) {
   std::fprintf(stderr, "carom toi fuzz: %s\n", what);
@@ -52,13 +56,16 @@ struct Input {
   double horizon = 0.0;
   double start_angle = 0.0;
   double end_angle = 0.0;
+  Vec2 aa;
+  Vec2 ab;
 };
 
 Input decode(const std::uint8_t* data, std::size_t size) {
   double v[kDoubles] = {};
   std::memcpy(v, data, std::min(size, sizeof v));
   return {
-      {{v[0], v[1]}, v[2]}, {v[3], v[4]}, {{v[5], v[6]}, v[7]}, {v[8], v[9]}, v[10], v[11], v[12]};
+      {{v[0], v[1]}, v[2]}, {v[3], v[4]},  {{v[5], v[6]}, v[7]}, {v[8], v[9]}, v[10], v[11], v[12],
+      {v[13], v[14]},       {v[15], v[16]}};
 }
 
 bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
@@ -180,11 +187,69 @@ void fuzz_static_shapes(const Input& in) {
   }
 }
 
+// Whether every value is of ordinary magnitude (|x| <= 1e6, and radii and the horizon at least
+// 1e-3), where a hit can be checked against the distance it claims.
+bool ordinary(std::initializer_list<double> values) {
+  for (const double x : values) {
+    if (!(std::abs(x) <= 1e6)) return false;
+  }
+  return true;
+}
+
+// The same queries under accelerations: valid answers, symmetry, the straight-line answer for
+// zero accelerations, and real touches at ordinary magnitudes.
+void fuzz_accelerated(const Input& in) {
+  const carom::Motion ma{in.va, in.aa};
+  const carom::Motion mb{in.vb, in.ab};
+  const bool moving_valid =
+      valid_ball(in.a) && finite(in.va) && finite(in.aa) && valid_horizon(in.horizon);
+  Impact ab;
+  if (call([&] { return carom::time_of_impact_ball_ball(in.a, ma, in.b, mb, in.horizon); },
+           moving_valid && valid_ball(in.b) && finite(in.vb) && finite(in.ab), ab)) {
+    check_answer(ab, in.horizon);
+    const Impact ba = carom::time_of_impact_ball_ball(in.b, mb, in.a, ma, in.horizon);
+    check(ab.hit == ba.hit && ab.t == ba.t, "accelerated ball-ball is not symmetric in A and B");
+    if (in.aa == Vec2{} && in.ab == Vec2{}) {
+      check(same(ab, carom::time_of_impact_ball_ball(in.a, in.va, in.b, in.vb, in.horizon)),
+            "zero accelerations differ from the straight-line answer");
+    }
+    const bool checkable = ordinary({in.a.center.x, in.a.center.y, in.a.radius, in.va.x, in.va.y,
+                                     in.aa.x, in.aa.y, in.b.center.x, in.b.center.y, in.b.radius,
+                                     in.vb.x, in.vb.y, in.ab.x, in.ab.y, in.horizon}) &&
+                           in.a.radius >= 1e-3 && in.b.radius >= 1e-3;
+    if (ab.hit && ab.t > 0.0 && checkable) {
+      // At a hit after the start, the centres are the sum of the radii apart, to the rounding
+      // of the positions and the time.
+      const double apart = std::hypot(ab.b_at.x - ab.a_at.x, ab.b_at.y - ab.a_at.y);
+      check(std::abs(apart - (in.a.radius + in.b.radius)) <= 1e-6 * (1.0 + in.horizon) * 1e3,
+            "an accelerated ball-ball hit is no touch");
+    }
+  }
+  Impact at_point;
+  if (call([&] { return carom::time_of_impact_ball_point(in.a, ma, in.b.center, in.horizon); },
+           moving_valid && finite(in.b.center), at_point)) {
+    check_answer(at_point, in.horizon);
+  }
+  Impact at_segment;
+  const Segment segment{in.b.center, in.vb};
+  if (call([&] { return carom::time_of_impact_ball_segment(in.a, ma, segment, in.horizon); },
+           moving_valid && finite(segment.a) && finite(segment.b), at_segment)) {
+    check_answer(at_segment, in.horizon);
+  }
+  const Arc arc{in.b.center, in.b.radius, in.start_angle, in.end_angle};
+  try {
+    check_answer(carom::time_of_impact_ball_arc(in.a, ma, arc, in.horizon), in.horizon);
+  } catch (const carom::InvalidArgument&) {
+    // The straight-line arc query above checks which arcs are refused; this one only answers.
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const Input input = decode(data, size);
   fuzz_ball_ball(input);
   fuzz_static_shapes(input);
+  fuzz_accelerated(input);
   return 0;
 }

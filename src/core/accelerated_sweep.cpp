@@ -1,0 +1,447 @@
+// Time of impact under a constant acceleration: each gap a polynomial in time, closed by
+// gap_polynomial.hpp (docs/derivation.md, "Gaps that are polynomials in time").
+#include "accelerated_sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact_range.hpp"
+#include "gap_polynomial.hpp"
+#include "segment_frame.hpp"
+#include "validate.hpp"
+
+namespace carom {
+namespace detail {
+namespace {
+
+// The exponent of p − q's largest component, taken of halves where the difference overflows.
+int offset_exponent(Vec2 p, Vec2 q) {
+  const Vec2 d = p - q;
+  if (is_finite(d)) return exponent_of(d);
+  return exponent_of(p * 0.5 - q * 0.5) + 1;
+}
+
+// A vector whose true value is v·2^extra (a difference of velocities that overflowed is kept
+// halved, with extra 1).
+struct Exact {
+  Vec2 v;
+  int extra = 0;
+
+  [[nodiscard]] int exponent() const {
+    return v == Vec2{} ? kZeroExponent : exponent_of(v) + extra;
+  }
+};
+
+Exact difference(Vec2 p, Vec2 q) {
+  const Vec2 d = p - q;
+  if (is_finite(d)) return {d, 0};
+  return {p * 0.5 - q * 0.5, 1};
+}
+
+// The scales of one problem: lengths by 2^-length and times by 2^-time, so that every offset and
+// radius is below 1 in magnitude and so are velocity·t and ½·acceleration·t² over a unit of
+// scaled time. Powers of two change no rounding.
+struct Scale {
+  int length = 0;
+  int time = 0;
+
+  [[nodiscard]] Vec2 offset(Vec2 p, Vec2 q) const {
+    const Exact d = difference(p, q);
+    return scaled(d.v, d.extra - length);
+  }
+  [[nodiscard]] double distance(double r) const { return std::ldexp(r, -length); }
+  [[nodiscard]] Vec2 velocity(const Exact& v) const { return scaled(v.v, v.extra + time - length); }
+  [[nodiscard]] Vec2 acceleration(const Exact& a) const {
+    return scaled(a.v, a.extra + 2 * time - length);
+  }
+  [[nodiscard]] double to_scaled_time(double t) const { return std::ldexp(t, -time); }
+  [[nodiscard]] double from_scaled_time(double t) const { return std::ldexp(t, time); }
+};
+
+Scale make_scale(int largest_length_exponent, const Exact& velocity, const Exact& acceleration) {
+  Scale scale;
+  scale.length = largest_length_exponent + 1;
+  const bool moving = velocity.v != Vec2{};
+  const bool accelerating = acceleration.v != Vec2{};
+  if (moving) scale.time = scale.length - velocity.exponent() - 1;
+  if (accelerating) {
+    // floor((length − e − 1) / 2), for either sign (>> of a negative int is arithmetic in C++20).
+    const int by_acceleration = (scale.length - acceleration.exponent() - 1) >> 1;
+    scale.time = moving ? std::min(scale.time, by_acceleration) : by_acceleration;
+  }
+  return scale;
+}
+
+// A centre moving as s + u·t + ½·a·t² relative to a fixed point, in scaled units.
+struct Path {
+  Vec2 s;
+  Vec2 u;
+  Vec2 a;
+
+  [[nodiscard]] Vec2 at(double t) const { return s + u * t + (a * (0.5 * t)) * t; }
+};
+
+double abs_dot(Vec2 x, Vec2 y) { return std::abs(x.x * y.x) + std::abs(x.y * y.y); }
+
+// |s + u·t + ½·a·t²|² − R²: positive while the centre is outside the circle of radius R.
+GapPolynomial outside_circle(const Path& path, double radius) {
+  const Vec2 s = path.s;
+  const Vec2 u = path.u;
+  const Vec2 a = path.a;
+  GapPolynomial p;
+  p.c[0] = dot(s, s) - radius * radius;
+  p.weight[0] = dot(s, s) + radius * radius;
+  p.c[1] = 2.0 * dot(s, u);
+  p.weight[1] = 2.0 * abs_dot(s, u);
+  p.c[2] = dot(u, u) + dot(s, a);
+  p.weight[2] = dot(u, u) + abs_dot(s, a);
+  p.c[3] = dot(u, a);
+  p.weight[3] = abs_dot(u, a);
+  p.c[4] = 0.25 * dot(a, a);
+  p.weight[4] = p.c[4];
+  return p;
+}
+
+// R² − |s + u·t + ½·a·t²|²: positive while the centre is inside the circle of radius R.
+GapPolynomial inside_circle(const Path& path, double radius) {
+  GapPolynomial p = outside_circle(path, radius);
+  for (double& c : p.c) c = -c;
+  return p;
+}
+
+// The earliest approaching contact found so far with a static shape, in real time.
+struct Candidate {
+  bool found = false;
+  double t = 0.0;
+  Vec2 point;   // the touched point of the shape
+  Vec2 normal;  // unit, from the ball's centre towards point
+};
+
+void keep_earliest(Candidate& best, double t, Vec2 point, Vec2 normal) {
+  if (!best.found || t < best.t) best = {true, t, point, normal};
+}
+
+// The unit vector along `preferred`, or along the first non-zero fallback.
+Vec2 direction_or(Vec2 preferred, Vec2 fallback, Vec2 last_resort) {
+  if (preferred != Vec2{} && is_finite(preferred)) return normalized(preferred);
+  if (fallback != Vec2{} && is_finite(fallback)) return normalized(fallback);
+  return normalized(last_resort);
+}
+
+// A moving ball against static shapes: its own frame of scales, and the queries on its parts.
+class StaticQuery {
+ public:
+  StaticQuery(const Ball& ball, const Motion& motion, double horizon, int largest_length_exponent)
+      : ball_(ball),
+        motion_(motion),
+        horizon_(horizon),
+        scale_(make_scale(std::max(largest_length_exponent, exponent_of(ball.radius)),
+                          {motion.velocity, 0}, {motion.acceleration, 0})),
+        u_(scale_.velocity({motion.velocity, 0})),
+        a_(scale_.acceleration({motion.acceleration, 0})),
+        scaled_horizon_(scale_.to_scaled_time(horizon)),
+        radius_(scale_.distance(ball.radius)) {}
+
+  [[nodiscard]] Vec2 center_at(double t) const { return position_at(ball_.center, motion_, t); }
+  // The path of the ball's centre relative to `origin`, scaled.
+  [[nodiscard]] Path path_from(Vec2 origin) const {
+    return {scale_.offset(ball_.center, origin), u_, a_};
+  }
+  [[nodiscard]] const Ball& ball() const { return ball_; }
+  [[nodiscard]] double scaled_radius() const { return radius_; }
+  [[nodiscard]] double distance(double r) const { return scale_.distance(r); }
+  [[nodiscard]] Vec2 scaled_offset(Vec2 p, Vec2 q) const { return scale_.offset(p, q); }
+
+  // The closings of a scaled gap, in scaled time.
+  [[nodiscard]] GapClosings closings(const GapPolynomial& gap, AtStart at_start) const {
+    return gap_closings(gap, scaled_horizon_, at_start);
+  }
+  // A scaled time back in real time, within the horizon.
+  [[nodiscard]] double real_time(double scaled_t) const {
+    return std::min(scale_.from_scaled_time(scaled_t), horizon_);
+  }
+  // The direction the ball moves in at t (its velocity's, else its acceleration's).
+  [[nodiscard]] Vec2 heading_at(double t) const {
+    return direction_or(motion_.velocity + motion_.acceleration * t, motion_.velocity,
+                        motion_.acceleration);
+  }
+  [[nodiscard]] bool moves() const {
+    return motion_.velocity != Vec2{} || motion_.acceleration != Vec2{};
+  }
+
+  // The first contact with a fixed point.
+  void point(Vec2 point, Candidate& best) const {
+    const Path path = path_from(point);
+    if (path.s == Vec2{}) {
+      // A centre exactly on the point has no side to move away to: any motion deepens it.
+      if (moves()) keep_earliest(best, 0.0, point, heading_at(0.0));
+      return;
+    }
+    const GapClosings closings = this->closings(outside_circle(path, radius_), AtStart::counts);
+    if (closings.count == 0) return;
+    const double t = real_time(closings.t[0]);
+    const Vec2 at = center_at(t);
+    keep_earliest(best, t, point, direction_or(point - at, -path.at(closings.t[0]), heading_at(t)));
+  }
+
+ private:
+  Ball ball_;
+  Motion motion_;
+  double horizon_;
+  Scale scale_;
+  Vec2 u_;
+  Vec2 a_;
+  double scaled_horizon_;
+  double radius_;
+};
+
+Impact finish_static(const Ball& ball, const Motion& motion, Vec2 nearest, const Candidate& best) {
+  Impact out;
+  out.overlapping = strictly_within_distance(nearest - ball.center, ball.radius);
+  if (best.found) {
+    out.hit = true;
+    out.t = best.t;
+    out.a_at = position_at(ball.center, motion, best.t);
+    out.b_at = best.point;
+    out.point = best.point;
+    out.normal = best.normal;
+    return out;
+  }
+  out.a_at = ball.center;
+  out.b_at = nearest;
+  out.point = nearest;
+  out.normal = direction_or(nearest - ball.center, nearest * 0.5 - ball.center * 0.5, Vec2{});
+  return out;
+}
+
+// The ball's contacts with the segment's interior, from either side: the signed distance of its
+// centre from the line is a quadratic in time, and each side's gap (distance − radius) closes
+// at most once. The side the centre starts on counts a touch at the start; the far side is
+// reached only round an end (thrown past it and falling back onto the segment, say).
+void segment_interior(const StaticQuery& query, const Segment& segment, Candidate& best) {
+  const Vec2 along = query.scaled_offset(segment.b, segment.a);
+  const double length_sq = length_squared(along);
+  // A segment this short against the ball or the distance: its ends decide.
+  if (!(length_sq > 0x1p-1000)) return;
+  const Vec2 normal = left_normal(along) / std::sqrt(length_sq);
+  const Path path = query.path_from(segment.a);
+  const double radius = query.scaled_radius();
+  const double h = dot(path.s, normal);
+  if (h == 0.0) {
+    // A centre exactly on the line, within the segment: no side to move away to.
+    const double fraction = dot(path.s, along) / length_sq;
+    if (fraction >= 0.0 && fraction <= 1.0 && query.moves()) {
+      keep_earliest(best, 0.0, query.ball().center, query.heading_at(0.0));
+    }
+    return;
+  }
+  const double side = h > 0.0 ? 1.0 : -1.0;
+  for (const double facing : {side, -side}) {
+    GapPolynomial gap;
+    gap.c[0] = facing * h - radius;
+    gap.weight[0] = abs_dot(path.s, normal) + radius;
+    gap.c[1] = facing * dot(path.u, normal);
+    gap.weight[1] = abs_dot(path.u, normal);
+    gap.c[2] = facing * 0.5 * dot(path.a, normal);
+    gap.weight[2] = 0.5 * abs_dot(path.a, normal);
+    const GapClosings closings =
+        query.closings(gap, facing == side ? AtStart::counts : AtStart::ignored);
+    if (closings.count == 0) continue;
+    const double scaled_t = closings.t[0];
+    const double fraction = dot(path.at(scaled_t), along) / length_sq;
+    if (!(fraction >= 0.0 && fraction <= 1.0)) continue;  // past an end: the end decides
+    const double t = query.real_time(scaled_t);
+    const Vec2 outward = normal * facing;  // from the line towards the centre
+    keep_earliest(best, t, point_on_segment(segment, fraction), -outward);
+  }
+}
+
+// The ball's contacts with an arc's interior (its ends are points): the centre enters the circle
+// of radius arc + ball from outside, or reaches the circle of radius arc − ball from inside (a
+// ball in a bowl), or, for a ball larger than the arc's radius, enters the circle of radius
+// ball − arc and touches the arc across its centre; each where the touched point lies within the
+// span. A quartic closes at most twice, and the first closing within the span counts.
+void arc_interior(const StaticQuery& query, const ArcFrame& arc, Candidate& best) {
+  const Path path = query.path_from(arc.center);
+  const double arc_radius = query.distance(arc.radius);
+  const double radius = query.scaled_radius();
+  // side: +1 where the touched point lies on the ball's side of the arc's centre, −1 across it.
+  const auto consider = [&](const GapClosings& closings, double side) {
+    for (std::size_t k = 0; k < closings.count; ++k) {
+      const Vec2 offset = path.at(closings.t[k]);  // from the arc's centre, scaled
+      const double t = query.real_time(closings.t[k]);
+      const Vec2 direction = direction_or(offset, query.heading_at(t), Vec2{1.0, 0.0}) * side;
+      if (!arc.contains(direction)) continue;
+      const Vec2 point = arc.center + direction * arc.radius;
+      const Vec2 center = query.center_at(t);
+      keep_earliest(best, t, point, direction_or(point - center, -direction * side, direction));
+      return;
+    }
+  };
+  // (A start beyond a circle, on its other side, is no contact with the arc: `touching`.)
+  consider(query.closings(outside_circle(path, arc_radius + radius), AtStart::touching), 1.0);
+  const double inner = arc_radius - radius;
+  if (inner > 0.0) {
+    consider(query.closings(inside_circle(path, inner), AtStart::touching), 1.0);
+  } else if (inner < 0.0) {
+    consider(query.closings(outside_circle(path, -inner), AtStart::touching), -1.0);
+  } else if (query.moves() && within_distance(path.s, std::ldexp(arc_radius, -40))) {
+    // A ball exactly as large as the arc's circle, its centre on the arc's centre (or a rounding
+    // off it): it fills the circle, and any motion presses it into the wall where it moves to.
+    const Vec2 direction = query.heading_at(0.0);
+    if (arc.contains(direction))
+      keep_earliest(best, 0.0, arc.center + direction * arc.radius, direction);
+  }
+}
+
+}  // namespace
+
+Vec2 position_at(Vec2 p, const Motion& motion, double t) {
+  // (½·t first, then t: t² alone may overflow where the product does not, and a zero component
+  // times an overflowed t² would be NaN.)
+  const Vec2 at = p + motion.velocity * t + (motion.acceleration * (0.5 * t)) * t;
+  if (is_finite(at)) [[likely]]
+    return at;
+  const Vec2 halves =
+      (p * 0.5 + motion.velocity * (0.5 * t) + (motion.acceleration * (0.25 * t)) * t) * 2.0;
+  // Beyond the double range: the term of the highest power that overflowed decides the sign
+  // (where two terms overflowed with opposite signs their sum is NaN).
+  const auto beyond = [](double value, double acceleration, double velocity) {
+    if (!std::isnan(value)) return value;
+    return std::copysign(HUGE_VAL, acceleration != 0.0 ? acceleration : velocity);
+  };
+  return {beyond(halves.x, motion.acceleration.x, motion.velocity.x),
+          beyond(halves.y, motion.acceleration.y, motion.velocity.y)};
+}
+
+Impact accelerated_ball_point(const Ball& a, const Motion& motion_a, Vec2 point, double horizon) {
+  const StaticQuery query(a, motion_a, horizon, offset_exponent(a.center, point));
+  Candidate best;
+  query.point(point, best);
+  return finish_static(a, motion_a, point, best);
+}
+
+Impact accelerated_ball_segment(const Ball& a, const Motion& motion_a, const Segment& segment,
+                                double horizon) {
+  const int length =
+      std::max({offset_exponent(a.center, segment.a), offset_exponent(a.center, segment.b),
+                offset_exponent(segment.b, segment.a)});
+  const StaticQuery query(a, motion_a, horizon, length);
+  Candidate best;
+  if (segment.a != segment.b) segment_interior(query, segment, best);
+  query.point(segment.a, best);
+  if (segment.b != segment.a) query.point(segment.b, best);
+  return finish_static(a, motion_a, nearest_on_segment(segment, a.center), best);
+}
+
+Impact accelerated_ball_arc(const Ball& a, const Motion& motion_a, const ArcFrame& arc,
+                            double horizon) {
+  const int length = std::max({offset_exponent(a.center, arc.center), exponent_of(arc.radius) + 1,
+                               offset_exponent(a.center, arc.start_point),
+                               offset_exponent(a.center, arc.end_point)});
+  const StaticQuery query(a, motion_a, horizon, length);
+  Candidate best;
+  if (arc.span > 0.0) arc_interior(query, arc, best);
+  query.point(arc.start_point, best);
+  if (arc.end_point != arc.start_point) query.point(arc.end_point, best);
+  return finish_static(a, motion_a, arc.nearest(a.center), best);
+}
+
+Impact accelerated_ball_ball(const Ball& a, const Motion& motion_a, const Ball& b,
+                             const Motion& motion_b, double horizon) {
+  // Relative motion: A moves by the difference of the motions, B stands still.
+  const Exact velocity = difference(motion_a.velocity, motion_b.velocity);
+  const Exact acceleration = difference(motion_a.acceleration, motion_b.acceleration);
+  const int length =
+      std::max(offset_exponent(a.center, b.center), exponent_of(std::max(a.radius, b.radius)) + 1);
+  const Scale scale = make_scale(length, velocity, acceleration);
+  const Path path{scale.offset(a.center, b.center), scale.velocity(velocity),
+                  scale.acceleration(acceleration)};
+  const double reach = scale.distance(a.radius) + scale.distance(b.radius);
+  const bool moving = velocity.v != Vec2{} || acceleration.v != Vec2{};
+  Impact out;
+  out.overlapping = strictly_within_distance(path.s, reach);
+  double scaled_t = 0.0;
+  if (path.s == Vec2{}) {
+    // Coincident centres: no line of centres and no side to separate to.
+    out.hit = moving;
+  } else {
+    const GapClosings closings =
+        gap_closings(outside_circle(path, reach), scale.to_scaled_time(horizon), AtStart::counts);
+    out.hit = closings.count > 0;
+    if (out.hit) scaled_t = closings.t[0];
+  }
+  out.t = out.hit ? std::min(scale.from_scaled_time(scaled_t), horizon) : 0.0;
+  out.a_at = position_at(a.center, motion_a, out.t);
+  out.b_at = position_at(b.center, motion_b, out.t);
+  const Vec2 at = path.at(scaled_t);  // A's centre from B's, scaled
+  out.normal = direction_or(-at, -(path.u + path.a * scaled_t), -path.a);
+  const double share = a.radius / (a.radius + b.radius);
+  const Vec2 between = out.b_at - out.a_at;
+  out.point = is_finite(between) ? out.a_at + between * share : out.a_at + out.normal * a.radius;
+  return out;
+}
+
+}  // namespace detail
+
+namespace {
+
+void validate_motion(const char* function, const Ball& a, const Motion& motion, double horizon) {
+  detail::require_finite(function, "a.center", a.center);
+  detail::require_positive(function, "a.radius", a.radius);
+  detail::require_finite(function, "motion_a.velocity", motion.velocity);
+  detail::require_finite(function, "motion_a.acceleration", motion.acceleration);
+  detail::require_non_negative(function, "horizon", horizon);
+}
+
+}  // namespace
+
+Impact time_of_impact_ball_ball(const Ball& a, const Motion& motion_a, const Ball& b,
+                                const Motion& motion_b, double horizon) {
+  constexpr const char* kFunction = "time_of_impact_ball_ball";
+  validate_motion(kFunction, a, motion_a, horizon);
+  detail::require_finite(kFunction, "b.center", b.center);
+  detail::require_positive(kFunction, "b.radius", b.radius);
+  detail::require_finite(kFunction, "motion_b.velocity", motion_b.velocity);
+  detail::require_finite(kFunction, "motion_b.acceleration", motion_b.acceleration);
+  if (motion_a.acceleration == Vec2{} && motion_b.acceleration == Vec2{}) {
+    return time_of_impact_ball_ball(a, motion_a.velocity, b, motion_b.velocity, horizon);
+  }
+  return detail::accelerated_ball_ball(a, motion_a, b, motion_b, horizon);
+}
+
+Impact time_of_impact_ball_point(const Ball& a, const Motion& motion_a, Vec2 point,
+                                 double horizon) {
+  constexpr const char* kFunction = "time_of_impact_ball_point";
+  validate_motion(kFunction, a, motion_a, horizon);
+  detail::require_finite(kFunction, "point", point);
+  if (motion_a.acceleration == Vec2{}) {
+    return time_of_impact_ball_point(a, motion_a.velocity, point, horizon);
+  }
+  return detail::accelerated_ball_point(a, motion_a, point, horizon);
+}
+
+Impact time_of_impact_ball_segment(const Ball& a, const Motion& motion_a, const Segment& segment,
+                                   double horizon) {
+  constexpr const char* kFunction = "time_of_impact_ball_segment";
+  validate_motion(kFunction, a, motion_a, horizon);
+  detail::require_finite(kFunction, "segment.a", segment.a);
+  detail::require_finite(kFunction, "segment.b", segment.b);
+  if (motion_a.acceleration == Vec2{}) {
+    return time_of_impact_ball_segment(a, motion_a.velocity, segment, horizon);
+  }
+  return detail::accelerated_ball_segment(a, motion_a, segment, horizon);
+}
+
+Impact time_of_impact_ball_arc(const Ball& a, const Motion& motion_a, const Arc& arc,
+                               double horizon) {
+  constexpr const char* kFunction = "time_of_impact_ball_arc";
+  validate_motion(kFunction, a, motion_a, horizon);
+  const detail::ArcFrame frame = detail::make_arc_frame(kFunction, arc);
+  if (motion_a.acceleration == Vec2{}) {
+    return time_of_impact_ball_arc(a, motion_a.velocity, arc, horizon);
+  }
+  return detail::accelerated_ball_arc(a, motion_a, frame, horizon);
+}
+
+}  // namespace carom

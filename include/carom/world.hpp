@@ -63,6 +63,11 @@ struct WorldDef {
   // diameters in a dilute world). A cell smaller than the largest diameter given here is raised
   // to it. Room beyond the diameter is used as the cells' hysteresis (docs/engine.md).
   double cell_size = 0.0;
+  // The acceleration of every movable ball (gravity): between its events a ball follows the
+  // parabola p + v·t + ½·gravity·t², and every contact time is still exact (docs/world.md,
+  // "Gravity"). Immovable balls do not fall. Zero, the default, keeps balls on straight lines;
+  // every result is then what it is without the field. Changed between steps by set_gravity.
+  Vec2 gravity{};
 };
 
 struct BallDef {
@@ -234,8 +239,17 @@ class World {
   [[nodiscard]] std::uint64_t user_data(BallId id) const;
   [[nodiscard]] std::size_t ball_count() const noexcept;
   [[nodiscard]] double kinetic_energy() const noexcept;          // of movable balls
+  // −Σ m·gravity·p over movable balls: the potential energy of gravity, zero at the origin (0
+  // without gravity). kinetic_energy() + potential_energy() is the total that elastic contacts
+  // keep.
+  [[nodiscard]] double potential_energy() const noexcept;
   [[nodiscard]] Vec2 momentum() const noexcept;                  // of movable balls
   [[nodiscard]] std::uint64_t collision_count() const noexcept;  // since creation, all kinds
+
+  // ---- changing the world between steps ----
+  // Sets WorldDef::gravity (finite) from the world's time on; every ball keeps its place and
+  // velocity at that time.
+  void set_gravity(Vec2 gravity);
 
   // ---- changing balls between steps ----
   void set_velocity(BallId id, Vec2 velocity);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "carom/geometry.hpp"
+#include "core/accelerated_sweep.hpp"
 
 namespace carom::detail {
 
@@ -34,6 +35,12 @@ bool inside_arc(const Wall& wall, Vec2 p) {
 Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity, double horizon) {
   return wall.is_arc ? time_of_impact_ball_arc(ball, velocity, wall.arc, horizon)
                      : time_of_impact_ball_segment(ball, velocity, wall.segment, horizon);
+}
+
+Impact time_of_impact(const Wall& wall, const Ball& ball, const Motion& motion, double horizon) {
+  if (motion.acceleration == Vec2{}) return time_of_impact(wall, ball, motion.velocity, horizon);
+  return wall.is_arc ? accelerated_ball_arc(ball, motion, wall.frame, horizon)
+                     : accelerated_ball_segment(ball, motion, wall.segment, horizon);
 }
 
 void bounds(const Wall& wall, Vec2& lower, Vec2& upper) {

@@ -30,6 +30,10 @@ struct Wall {
 [[nodiscard]] Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity,
                                     double horizon);
 
+// The same for a ball that accelerates (gravity).
+[[nodiscard]] Impact time_of_impact(const Wall& wall, const Ball& ball, const Motion& motion,
+                                    double horizon);
+
 // An axis-aligned box holding the whole wall.
 void bounds(const Wall& wall, Vec2& lower, Vec2& upper);
 

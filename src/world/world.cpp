@@ -123,7 +123,9 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
              "must lie above and to the right of def.lower");
     }
   }
+  detail::require_finite(kFunction, "def.gravity", def.gravity);
   impl_->def = def;
+  impl_->gravity_on = def.gravity != Vec2{};
   impl_->periodic_cell = PeriodicCell(def.lower, def.upper);
   if (def.boundary == Boundary::box) {
     add_box(def.lower, def.upper);
@@ -352,7 +354,8 @@ Vec2 World::position(BallId id) const {
 }
 
 Vec2 World::velocity(BallId id) const {
-  return impl_->balls[impl_->slot_of("World::velocity", id)].velocity;
+  const std::uint32_t slot = impl_->slot_of("World::velocity", id);
+  return impl_->velocity_at(slot, impl_->time);
 }
 
 double World::radius(BallId id) const {
@@ -375,7 +378,18 @@ double World::kinetic_energy() const noexcept {
   for (const std::uint32_t i : impl_->slot_of_handle) {
     const BallSlot& b = impl_->balls[i];
     if (!b.alive() || !impl_->movable(i)) continue;
-    energy += 0.5 * impl_->species_of(i).mass * length_squared(b.velocity);
+    energy += 0.5 * impl_->species_of(i).mass * length_squared(impl_->velocity_at(i, impl_->time));
+  }
+  return energy;
+}
+
+double World::potential_energy() const noexcept {
+  if (!impl_->gravity_on) return 0.0;
+  double energy = 0.0;
+  for (const std::uint32_t i : impl_->slot_of_handle) {  // in handle order, as kinetic_energy
+    if (!impl_->balls[i].alive() || !impl_->movable(i)) continue;
+    energy -=
+        impl_->species_of(i).mass * dot(impl_->def.gravity, impl_->position_at(i, impl_->time));
   }
   return energy;
 }
@@ -384,12 +398,25 @@ Vec2 World::momentum() const noexcept {
   Vec2 total;
   for (const std::uint32_t i : impl_->slot_of_handle) {  // in handle order, as kinetic_energy
     const BallSlot& b = impl_->balls[i];
-    if (b.alive() && impl_->movable(i)) total += b.velocity * impl_->species_of(i).mass;
+    if (b.alive() && impl_->movable(i)) {
+      total += impl_->velocity_at(i, impl_->time) * impl_->species_of(i).mass;
+    }
   }
   return total;
 }
 
 std::uint64_t World::collision_count() const noexcept { return impl_->collisions; }
+
+void World::set_gravity(Vec2 gravity) {
+  detail::require_finite("World::set_gravity", "gravity", gravity);
+  Impl& w = *impl_;
+  if (gravity == w.def.gravity) return;
+  // Every ball is brought to now under the old law, and predicted again under the new one.
+  w.synchronize(w.time);
+  w.def.gravity = gravity;
+  w.gravity_on = gravity != Vec2{};
+  w.events_valid = false;
+}
 
 void World::set_velocity(BallId id, Vec2 velocity) {
   constexpr const char* kFunction = "World::set_velocity";

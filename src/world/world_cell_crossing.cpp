@@ -66,6 +66,10 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, b
   }
   grid.erase(ball);
   grid.insert(ball, grid.index(cx, cy));
+  if (gravity_on) [[unlikely]] {
+    predict_under_gravity(ball);
+    return;
+  }
   Event best;
   detail::SlotQuery query;
   PredictionCell where;

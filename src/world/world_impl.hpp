@@ -16,7 +16,9 @@
 #include "ball_store.hpp"
 #include "carom/bounce.hpp"  // kImmovable
 #include "carom/geometry.hpp"
+#include "carom/sweep.hpp"  // Motion
 #include "carom/world.hpp"
+#include "core/accelerated_sweep.hpp"
 #include "event_queue.hpp"
 #include "grid.hpp"
 #include "huge_page_allocator.hpp"
@@ -100,6 +102,9 @@ struct World::Impl : detail::BallStore {
   // Whether a moving immovable ball has met a ball in this run: a run that would never end is
   // then refused as a crush.
   bool mover_met = false;
+  // Whether def.gravity is not zero: only then do the parts for accelerated motion run, so that a
+  // world without gravity takes exactly the paths it always took.
+  bool gravity_on = false;
 
   // ---- handles ----
   // The slot of the live ball `id` names; throws InvalidArgument (naming `function`) for a null
@@ -112,8 +117,25 @@ struct World::Impl : detail::BallStore {
   }
   [[nodiscard]] double radius_of(std::uint32_t ball) const { return species_of(ball).radius; }
   [[nodiscard]] bool movable(std::uint32_t ball) const { return species_of(ball).movable(); }
+  // A ball's place and velocity at t (at or after its local time): on its straight line, or
+  // under gravity on its parabola.
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
+    if (gravity_on) [[unlikely]]
+      return detail::position_at(balls[ball].position, motion_of(ball), t - balls[ball].local_time);
     return balls[ball].position_at(t);
+  }
+  [[nodiscard]] Vec2 velocity_at(std::uint32_t ball, double t) const {
+    const detail::BallSlot& b = balls[ball];
+    if (gravity_on) [[unlikely]]
+      return b.velocity + acceleration_of(ball) * (t - b.local_time);
+    return b.velocity;
+  }
+  // The acceleration a ball moves with: gravity for a movable ball (docs/world.md, "Gravity").
+  [[nodiscard]] Vec2 acceleration_of(std::uint32_t ball) const {
+    return gravity_on && movable(ball) ? def.gravity : Vec2{};
+  }
+  [[nodiscard]] Motion motion_of(std::uint32_t ball) const {
+    return {balls[ball].velocity, acceleration_of(ball)};
   }
   // The shortest of the periodic images of d (d itself in a world that does not wrap).
   [[nodiscard]] Vec2 minimum_image(Vec2 d) const {
@@ -156,7 +178,7 @@ struct World::Impl : detail::BallStore {
   [[nodiscard]] std::string save_payload() const;
   // Fills a freshly constructed world from a payload whose checksum matched, checking that its
   // content is consistent.
-  void load_payload(detail::ByteReader& in);
+  void load_payload(detail::ByteReader& in, std::uint32_t version);
   void load_grid(detail::ByteReader& in);
 
   // ---- the grid's upkeep (world_grid_upkeep.cpp) ----
@@ -185,6 +207,9 @@ struct World::Impl : detail::BallStore {
   // the next run (docs/world.md, "Changing balls between steps").
   void repredict_changed(std::uint32_t ball);
   void predict(std::uint32_t ball);
+  // predict for a world with gravity (world_gravity.cpp): every pair and wall by the accelerated
+  // queries, the cell's exit by a quadratic.
+  void predict_under_gravity(std::uint32_t ball);
   // predict for a contact's two balls, i's slot set first (world_prediction.cpp).
   void predict_both(std::uint32_t i, std::uint32_t j);
   // predict's two parts (prediction_steps.hpp): the cell's exit and walls, then the balls around.
@@ -212,6 +237,8 @@ struct World::Impl : detail::BallStore {
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;
   // Brings one ball, or every ball, to time t (its position advanced along its velocity).
   void advance(std::uint32_t ball, double t);
+  // advance's part for a world with gravity (world_gravity.cpp): the velocity is re-based too.
+  void advance_under_gravity(std::uint32_t ball, double t);
   void synchronize(double t);
 
   // ---- the event loop (world_run.cpp) ----

@@ -29,8 +29,12 @@ using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the en
 // ---- prediction ---------------------------------------------------------------------------
 
 void World::Impl::advance(std::uint32_t ball, double t) {
+  if (gravity_on) [[unlikely]] {
+    advance_under_gravity(ball, t);
+    return;
+  }
   BallSlot& b = balls[ball];
-  b.position = position_at(ball, t);
+  b.position = b.position_at(t);
   b.local_time = t;
 }
 
@@ -72,6 +76,10 @@ void World::Impl::repredict_changed(std::uint32_t ball) {
 // other ball's slot is left alone: this one's covers their pair (docs/engine.md, "One event per
 // ball").
 void World::Impl::predict(std::uint32_t ball) {
+  if (gravity_on) [[unlikely]] {
+    predict_under_gravity(ball);
+    return;
+  }
   Event best;
   detail::SlotQuery query;
   PredictionCell where;
@@ -84,6 +92,11 @@ void World::Impl::predict(std::uint32_t ball) {
 // independent, and so the processor overlaps their chains of loads and arithmetic
 // (docs/decisions/0009-pair-kernel-avx2.md).
 void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
+  if (gravity_on) [[unlikely]] {
+    predict_under_gravity(i);
+    predict_under_gravity(j);
+    return;
+  }
   Event best_i;
   Event best_j;
   detail::SlotQuery query_i;

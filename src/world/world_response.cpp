@@ -133,14 +133,19 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   // The contact's own normal where the query confirms it (touching and approaching now), else
   // the direction to the nearest point (the ball a rounding short of the wall).
   const Ball shape{a.position, radius_of(i)};
-  Impact now = detail::time_of_impact(walls[wall], shape, a.velocity, 0.0);
+  // (Under gravity the contact is confirmed for the ball's parabola, with its own query.)
+  const Motion motion{a.velocity, gravity_on ? acceleration_of(i) : Vec2{}};
+  Impact now = gravity_on ? detail::time_of_impact(walls[wall], shape, motion, 0.0)
+                          : detail::time_of_impact(walls[wall], shape, a.velocity, 0.0);
   if (!now.hit) {
     // A contact a sliver ahead that the motion cannot reach: a gap below the rounding of the
     // position closes at a time at which the ball is still where it is now, so advancing it
     // changes nothing and the same contact would come up again and again, a sliver later each
     // time (a ball filling an arc's circle, at its centre, met its end point so). It is a
     // contact now.
-    const Impact ahead = detail::time_of_impact(walls[wall], shape, a.velocity, kFarFuture);
+    const Impact ahead = gravity_on
+                             ? detail::time_of_impact(walls[wall], shape, motion, kFarFuture)
+                             : detail::time_of_impact(walls[wall], shape, a.velocity, kFarFuture);
     if (ahead.hit && ahead.a_at == a.position) now = ahead;
   }
   const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);

@@ -28,7 +28,10 @@ namespace {
 constexpr char kMagic[8] = {'C', 'A', 'R', 'O', 'M', 'W', 'L', 'D'};
 // 2: the grid's hysteresis (docs/world.md, "Saving and resuming"). A version-1 save is refused:
 // it was written by an engine whose run this build would not continue bit for bit anyway.
+// 3: version 2 with gravity after the cell size; written only for a world with gravity, so that a
+// world without it saves exactly the bytes it always did.
 constexpr std::uint32_t kVersion = 2;
+constexpr std::uint32_t kGravityVersion = 3;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -48,9 +51,9 @@ std::uint64_t get_unsigned(const char* bytes, int count) {
   return value;
 }
 
-std::string framed(const std::string& payload) {
+std::string framed(const std::string& payload, std::uint32_t version) {
   std::string out(kMagic, sizeof kMagic);
-  put_u32(out, kVersion);
+  put_u32(out, version);
   put_u64(out, payload.size());
   put_u64(out, detail::fnv1a64(payload));
   return out + payload;
@@ -62,7 +65,8 @@ std::string framed(const std::string& payload) {
 }
 
 // Reads the header and the payload it announces, checking magic, version, length and checksum.
-std::string read_payload(const char* function, const std::string& source, std::istream& in) {
+std::string read_payload(const char* function, const std::string& source, std::istream& in,
+                         std::uint32_t& version) {
   char header[kHeaderSize];
   in.read(header, kHeaderSize);
   const auto header_read = static_cast<std::size_t>(in.gcount());
@@ -74,10 +78,11 @@ std::string read_payload(const char* function, const std::string& source, std::i
     damaged(function, source, std::to_string(header_read) + " bytes",
             "truncated: the header needs " + std::to_string(kHeaderSize) + " bytes");
   }
-  const auto version = static_cast<std::uint32_t>(get_unsigned(header + 8, 4));
-  if (version != kVersion) {
+  version = static_cast<std::uint32_t>(get_unsigned(header + 8, 4));
+  if (version != kVersion && version != kGravityVersion) {
     damaged(function, source, "version " + std::to_string(version),
-            "unsupported version (this build reads version " + std::to_string(kVersion) + ")");
+            "unsupported version (this build reads versions " + std::to_string(kVersion) + " and " +
+                std::to_string(kGravityVersion) + ")");
   }
   const std::uint64_t size = get_unsigned(header + 12, 8);
   const std::uint64_t checksum = get_unsigned(header + 20, 8);
@@ -117,6 +122,7 @@ std::string World::Impl::save_payload() const {
   out.f64(def.restitution);
   out.f64(def.collapse_time);
   out.f64(def.cell_size);
+  if (gravity_on) out.vec2(def.gravity);
 
   out.f64(time);
   out.u64(collisions);
@@ -199,7 +205,8 @@ std::string World::Impl::save_payload() const {
 }
 
 void World::save(std::ostream& out) const {
-  const std::string bytes = framed(impl_->save_payload());
+  const std::string bytes =
+      framed(impl_->save_payload(), impl_->gravity_on ? kGravityVersion : kVersion);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   out.flush();
   if (!out) {
@@ -209,7 +216,8 @@ void World::save(std::ostream& out) const {
 
 void World::save(const std::filesystem::path& path) const {
   try {
-    write_file_atomically(path, framed(impl_->save_payload()));
+    write_file_atomically(
+        path, framed(impl_->save_payload(), impl_->gravity_on ? kGravityVersion : kVersion));
   } catch (const FileError& error) {
     throw InvalidArgument("World::save", "path", path.string(), error.reason());
   }
@@ -217,7 +225,7 @@ void World::save(const std::filesystem::path& path) const {
 
 // ---- reading ---------------------------------------------------------------------------------
 
-void World::Impl::load_payload(ByteReader& in) {
+void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
   using carom::number_text;
   using detail::vector_text;
   const std::uint8_t boundary = in.u8("def.boundary");
@@ -230,6 +238,13 @@ void World::Impl::load_payload(ByteReader& in) {
   def.restitution = in.f64("def.restitution");
   def.collapse_time = in.f64("def.collapse_time");
   def.cell_size = in.f64("def.cell_size");
+  if (version == kGravityVersion) {
+    def.gravity = in.vec2("def.gravity");
+    if (!finite(def.gravity) || def.gravity == Vec2{}) {
+      in.inconsistent("def.gravity", vector_text(def.gravity), "must be finite and not zero");
+    }
+    gravity_on = true;
+  }
   if (def.boundary != Boundary::open && !(finite(def.lower) && finite(def.upper) &&
                                           def.upper.x > def.lower.x && def.upper.y > def.lower.y)) {
     in.inconsistent("def.upper", vector_text(def.upper),
@@ -454,10 +469,11 @@ void World::Impl::load_grid(ByteReader& in) {
 
 World World::load(std::istream& in) {
   constexpr const char* kFunction = "World::load";
-  const std::string payload = read_payload(kFunction, "in", in);
+  std::uint32_t version = 0;
+  const std::string payload = read_payload(kFunction, "in", in, version);
   ByteReader reader(kFunction, payload);
   World world;
-  world.impl_->load_payload(reader);
+  world.impl_->load_payload(reader, version);
   return world;
 }
 
@@ -468,10 +484,11 @@ World World::load(const std::filesystem::path& path) {
     throw InvalidArgument(kFunction, "path", path.string(),
                           std::string("cannot open it: ") + std::strerror(errno));
   }
-  const std::string payload = read_payload(kFunction, "path " + path.string(), in);
+  std::uint32_t version = 0;
+  const std::string payload = read_payload(kFunction, "path " + path.string(), in, version);
   ByteReader reader(kFunction, payload);
   World world;
-  world.impl_->load_payload(reader);
+  world.impl_->load_payload(reader, version);
   return world;
 }
 

@@ -1,0 +1,170 @@
+// Prediction under gravity: a ball's one pending event when balls move on parabolas
+// (docs/engine.md, "Gravity"). The same events as without gravity (contacts with the balls and
+// walls around, and leaving the cell), each time exact: two balls with the same acceleration keep a
+// linear relative motion (the quadratic of the straight-line case), every other gap is a polynomial
+// in time closed by the core's certified isolation (core/accelerated_sweep.hpp), and a cell's side
+// is reached at the root of a quadratic. Apart from the straight-line parts, so that a world
+// without gravity runs exactly as it did.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/accelerated_sweep.hpp"
+#include "core/circle_crossing.hpp"
+#include "engine_tuning.hpp"
+#include "world_impl.hpp"
+
+namespace carom {
+
+using detail::BallSlot;
+using detail::Event;
+using detail::EventKind;
+using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the engine's constants
+
+namespace {
+
+// √(v² + k), k ≥ −v², without overflow for large |v|.
+double root_of(double v, double k) {
+  const double magnitude = std::abs(v);
+  if (magnitude > 0x1p+500) return magnitude * std::sqrt(std::max(0.0, 1.0 + (k / v) / v));
+  return std::sqrt(std::max(0.0, v * v + k));
+}
+
+// The first time t ≥ 0 at which a coordinate moving as v·t + ½·a·t² has risen by d (d ≥ 0: the
+// distance to a side above it; d < 0: it is a rounding past the side already). Each root in its
+// cancellation-free form: 2d / (v + √(v² + 2ad)) while rising, (√(v² + 2ad) − v) / a when it
+// must first turn back.
+double first_rise(double d, double v, double a) {
+  if (!(d > 0.0)) {
+    if (v > 0.0 || (v == 0.0 && a > 0.0)) return 0.0;
+    d = 0.0;
+  }
+  if (v > 0.0) {
+    const double k = 2.0 * a * d;
+    if (k < -v * v) return kInfinity;  // it turns back short of the side
+    return 2.0 * d / (v + root_of(v, k));
+  }
+  if (!(a > 0.0)) return kInfinity;
+  return (root_of(v, 2.0 * a * d) - v) / a;
+}
+
+// When a coordinate at x, moving as v·t + ½·a·t², first reaches `lower` or `upper` (either
+// ±infinity: a side never left); `low` and `high` name the two sides.
+struct AxisExit {
+  double t = kInfinity;
+  std::uint32_t side = detail::kLeft;
+};
+AxisExit axis_exit(double x, double v, double a, double lower, double upper, std::uint32_t low,
+                   std::uint32_t high) {
+  AxisExit exit;
+  if (std::abs(upper) != kInfinity) exit = {first_rise(upper - x, v, a), high};
+  if (std::abs(lower) != kInfinity) {
+    const double t = first_rise(x - lower, -v, -a);
+    if (t < exit.t) exit = {t, low};
+  }
+  return exit;
+}
+
+}  // namespace
+
+void World::Impl::advance_under_gravity(std::uint32_t ball, double t) {
+  BallSlot& b = balls[ball];
+  const Vec2 velocity = velocity_at(ball, t);
+  b.position = position_at(ball, t);
+  b.velocity = velocity;
+  b.local_time = t;
+}
+
+void World::Impl::predict_under_gravity(std::uint32_t ball) {
+  const BallSlot& b = balls[ball];
+  const Vec2 p = b.position;  // at the world's time
+  const Motion motion = motion_of(ball);
+  const Vec2 v = motion.velocity;
+  const Vec2 a = motion.acceleration;
+  Event best;
+  best.owner = ball;
+
+  // Leaving the cell: the first side either coordinate reaches (x first on a tie).
+  const std::int32_t cell = grid.cell_of_ball(ball);
+  const std::int32_t cx = grid.column(cell);
+  const std::int32_t cy = grid.row(cell);
+  const AxisExit along_x = axis_exit(p.x, v.x, a.x, grid.exit_x(cx, false), grid.exit_x(cx, true),
+                                     detail::kLeft, detail::kRight);
+  const AxisExit along_y = axis_exit(p.y, v.y, a.y, grid.exit_y(cy, false), grid.exit_y(cy, true),
+                                     detail::kDown, detail::kUp);
+  const AxisExit& exit = along_y.t < along_x.t ? along_y : along_x;
+  best.time = time + exit.t;
+  best.kind = EventKind::cell_crossing;
+  best.partner = exit.side;
+  // Contacts after the ball leaves its cell are found again from the next one.
+  const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
+  const auto consider = [&](double t, EventKind kind, std::uint32_t partner,
+                            std::uint32_t partner_version) {
+    Event candidate;
+    candidate.time = time + t;
+    candidate.kind = kind;
+    candidate.owner = ball;
+    candidate.partner = partner;
+    candidate.partner_version = partner_version;
+    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
+  };
+
+  const detail::Species& kind = species[b.species];
+  const Ball shape{p, kind.radius};
+  for (const std::uint32_t w : grid.walls(cell)) {
+    const Impact impact = detail::time_of_impact(walls[w], shape, motion, horizon());
+    if (impact.hit) consider(impact.t, EventKind::ball_wall, w, 0);
+  }
+
+  // The balls of the 3×3 block: by their offsets as they are, as the minimum image, or, in a
+  // periodic grid with few cells, at all nine images (as prediction_steps.hpp takes them).
+  const bool movable_ball = kind.movable();
+  const bool periodic = def.boundary == Boundary::periodic;
+  const bool few_cells =
+      periodic && (grid.nx() < kSingleImageMinCells || grid.ny() < kSingleImageMinCells);
+  const auto pair = [&](std::uint32_t other, Vec2 offset) {
+    // offset: from the other ball's centre to this one's, at the world's time.
+    const BallSlot& o = balls[other];
+    const detail::Species& other_kind = species[o.species];
+    const Vec2 other_velocity = velocity_at(other, time);
+    const Vec2 other_acceleration = acceleration_of(other);
+    const double reach = kind.radius + other_kind.radius;
+    const double limit = horizon();
+    if (other_acceleration == a) {
+      // A shared acceleration cancels in the difference: the straight-line quadratic.
+      const detail::Crossing crossing =
+          detail::entry_crossing(offset, v - other_velocity, reach, limit);
+      if (crossing.found) consider(crossing.t, EventKind::ball_ball, other, o.version);
+      return;
+    }
+    const Impact impact = detail::accelerated_ball_ball(
+        Ball{offset, kind.radius}, motion, Ball{{}, other_kind.radius},
+        Motion{other_velocity, other_acceleration}, limit);
+    if (impact.hit) consider(impact.t, EventKind::ball_ball, other, o.version);
+  };
+  grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
+    for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
+         j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+      const auto other = static_cast<std::uint32_t>(j);
+      if (other == ball) continue;
+      if (!movable_ball && !movable(other)) continue;  // nothing can respond
+      const Vec2 offset = p - position_at(other, time);
+      if (!periodic) {
+        pair(other, offset);
+      } else if (!few_cells) {
+        pair(other, minimum_image(offset));
+      } else {
+        const Vec2 nearest = minimum_image(offset);
+        const Vec2 period = periodic_cell.period();
+        for (int kx = -1; kx <= 1; ++kx) {
+          for (int ky = -1; ky <= 1; ++ky)
+            pair(other, nearest + Vec2{kx * period.x, ky * period.y});
+        }
+      }
+    }
+  });
+  // (A crossing is never marked clear behind: cross_cell predicts a ball under gravity whole.)
+  queue.set(ball, best);
+}
+
+}  // namespace carom

@@ -3,6 +3,9 @@
 // (time of impact and bounce): no grid, no event queue, no cached predictions. Each iteration it
 // asks every pair and every ball–wall for its first approaching contact, takes the earliest,
 // moves every ball to that time and bounces. O(N²) per contact: slow and obviously right.
+// Under gravity every movable ball follows its parabola and the contact times come from the core's
+// accelerated queries (carom::Motion); with zero gravity the straight-line queries and moves
+// alone are used, so a scene without gravity runs bit for bit as a straight-line one.
 #pragma once
 
 #include <array>
@@ -47,6 +50,11 @@ struct ReferenceScene {
   Vec2 lower;
   Vec2 upper;
   double start_time = 0.0;  // the world time the balls' state belongs to
+  // The acceleration of every movable ball (WorldDef::gravity); immovable balls do not fall.
+  // A contact at which gravity merely presses a pair together with no normal speed (a resting
+  // contact) has no response the oracle can vouch for: meeting one throws std::runtime_error,
+  // so scenes under gravity keep their balls bouncing (elastic ones, say).
+  Vec2 gravity;
 };
 
 struct ReferenceContact {
@@ -79,12 +87,16 @@ class ReferenceSimulator {
   struct Candidate;
 
   [[nodiscard]] double lookahead() const;
+  // The ball's acceleration: gravity, or zero for an immovable ball.
+  [[nodiscard]] Vec2 acceleration_of(const ReferenceBall& ball) const;
   [[nodiscard]] Candidate earliest_contact(double horizon) const;
   void consider_pair(std::size_t i, std::size_t j, double horizon,
                      const std::vector<double>& speeds, Candidate& best) const;
   void consider_wall(std::size_t i, std::size_t w, double horizon, Candidate& best) const;
   void advance(double dt);
   void resolve(const Candidate& contact);
+  // Throws for a resting contact: its normal speed is zero within rounding of the pair's speed.
+  static void refuse_resting(const ReferenceContact& contact, double speed);
   // Moves on to the next contact if it happens by end_time (and resolves it), or to end_time.
   // Returns whether a contact was resolved.
   bool advance_to_next_contact(double end_time);

@@ -14,6 +14,7 @@
 // missed, extra, misordered or mistimed contact, a wrong bounce — shows where it happens.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
@@ -413,6 +414,319 @@ TEST(WorldReference, WholeRunAcrossCalls) {
   EXPECT_TRUE(testing::same_contacts(world_contacts, built.ids, reference.contacts(),
                                      tolerances_for(options)));
   EXPECT_TRUE(testing::same_state(built, reference, scene, tolerances_for(options)));
+}
+
+// ---- under gravity -----------------------------------------------------------------------------
+//
+// The same comparisons with WorldDef::gravity set: movable balls on parabolas, the oracle asking
+// the core's accelerated queries (carom::Motion) for every candidate contact. The balls are
+// elastic throughout, so none ever comes to rest: the oracle refuses resting contacts (see
+// ReferenceScene::gravity), and the scenes keep every contact a bounce.
+//
+// Tolerances are those above. The accelerated queries find a closing time to the rounding of the
+// gap polynomial (bisection with Newton steps, docs/derivation.md), so one prediction from
+// identical states again carries only a few roundings; 1e-9 leaves room for near-grazes as
+// before. Speeds grow as balls fall, so speeds and normals are measured against the top speed of
+// the balls at the time (never below the scene's starting one). Measured on these scenes and on
+// 300 more drawn like them (other seeds, gravity in every direction): times within 5e-14
+// relative, normals, approach speeds and velocities within 1e-12, positions within 7e-13 of the
+// side.
+
+// build_world makes a World without gravity; gravity set at time 0 gives it the scene's, every
+// ball keeping its start place and velocity.
+SceneWorld build_world_under_gravity(const ReferenceScene& scene) {
+  SceneWorld built = testing::build_world(scene);
+  built.world.set_gravity(scene.gravity);
+  return built;
+}
+
+double top_speed(const SceneWorld& built) {
+  double top = 0.0;
+  for (const BallId id : built.ids) top = std::max(top, length(built.world.velocity(id)));
+  return top;
+}
+
+// expect_contact_by_contact, with the speed scale following the balls as gravity speeds them up.
+void expect_contact_by_contact_under_gravity(SceneWorld& built, const ReferenceScene& scene,
+                                             std::size_t contact_count, Tolerances tolerances) {
+  const double starting_scale = tolerances.speed_scale;
+  for (std::size_t k = 0; k < contact_count; ++k) {
+    SCOPED_TRACE("contact " + std::to_string(k) + " under gravity");
+    tolerances.speed_scale = std::max(starting_scale, top_speed(built));
+    expect_contact_by_contact(built, scene, 1, tolerances);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+}
+
+// expect_step_by_step, with the speed scale following the balls likewise.
+void expect_step_by_step_under_gravity(SceneWorld& built, const ReferenceScene& scene, double dt,
+                                       int steps, Tolerances tolerances,
+                                       std::size_t& contacts_seen) {
+  const double starting_scale = tolerances.speed_scale;
+  for (int s = 0; s < steps; ++s) {
+    SCOPED_TRACE("step " + std::to_string(s) + " under gravity");
+    tolerances.speed_scale = std::max(starting_scale, top_speed(built));
+    expect_step_by_step(built, scene, dt, 1, tolerances, contacts_seen);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+}
+
+Tolerances gravity_tolerances(double side, double speed_scale) {
+  Tolerances tolerances;
+  tolerances.time = kTimeTol;
+  tolerances.time_scale = kReferenceStep;
+  tolerances.speed = kSpeedTol;
+  tolerances.speed_scale = speed_scale;
+  tolerances.position = kPositionTol * side;
+  return tolerances;
+}
+
+constexpr Vec2 kEarthGravity{0.0, -9.81};
+constexpr std::size_t kGravityContactsCompared = 3000;
+
+// The oracle on its own first, against closed forms: a ball dropped from rest meets the floor at
+// √(2h/g) with speed √(2gh), and bounces back up to the height it fell from.
+TEST(WorldReference, GravityOracleDropsABallAtTheClosedFormTime) {
+  ReferenceScene scene;
+  for (const testing::ReferenceWall& wall : testing::box_walls({0.0, 0.0}, {10.0, 20.0})) {
+    scene.walls.push_back(wall);
+  }
+  testing::ReferenceBall ball;
+  ball.position = {5.0, 11.0};
+  scene.balls.push_back(ball);  // radius 1: its centre falls 10 to the floor's contact
+  scene.gravity = {0.0, -5.0};
+  ReferenceSimulator reference(scene);
+  reference.run_until(3.0);
+  ASSERT_EQ(reference.contacts().size(), 1u);
+  const testing::ReferenceContact& floor = reference.contacts()[0];
+  EXPECT_EQ(floor.kind, ContactKind::ball_wall);
+  EXPECT_EQ(floor.wall, 0u);
+  EXPECT_NEAR(floor.time, 2.0, 1e-14);
+  EXPECT_NEAR(floor.approach_speed, 10.0, 1e-13);
+  // At t = 3 it has risen for 1 from the floor at speed 10: up 10 − 2.5.
+  EXPECT_NEAR(reference.balls()[0].position.y, 1.0 + 7.5, 1e-12);
+  EXPECT_NEAR(reference.balls()[0].velocity.y, 5.0, 1e-12);
+}
+
+// An elastic gas in a tall box: balls fly on parabolas, bounce off the floor and walls and off
+// each other (whose relative motion stays linear).
+TEST(WorldReference, GravityBoxGasContactByContact) {
+  GasOptions options;
+  options.ball_count = 36;
+  options.side = 20.0;
+  options.max_speed = 8.0;
+  ReferenceScene scene = testing::random_gas(options, 201);
+  scene.gravity = kEarthGravity;
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(options.side, options.max_speed));
+}
+
+// The same gas restarted from the World before each short step: step ends fall between contacts,
+// where both must have moved every ball along the same parabola.
+TEST(WorldReference, GravityBoxGasStepByStep) {
+  GasOptions options;
+  options.ball_count = 36;
+  options.side = 20.0;
+  options.max_speed = 8.0;
+  ReferenceScene scene = testing::random_gas(options, 202);
+  scene.gravity = kEarthGravity;
+  SceneWorld built = build_world_under_gravity(scene);
+  std::size_t contacts = 0;
+  // Half steps over 4 time units: a contact or two a step, each step end in mid-flight.
+  expect_step_by_step_under_gravity(built, scene, 0.5 * kReferenceStep, 480,
+                                    gravity_tolerances(options.side, options.max_speed), contacts);
+  EXPECT_GT(contacts, 150u);
+}
+
+// A small Galton board: elastic balls fall from the top of a box through rows of immovable pegs
+// (against which a falling ball's gap is a quartic in time) onto the floor, and bounce back up.
+ReferenceScene galton_board(Vec2 gravity) {
+  constexpr double kWidth = 20.0;
+  constexpr double kHeight = 30.0;
+  constexpr double kPegRadius = 0.3;
+  constexpr double kBallRadius = 0.4;
+  ReferenceScene scene;
+  scene.lower = {0.0, 0.0};
+  scene.upper = {kWidth, kHeight};
+  for (const testing::ReferenceWall& wall : testing::box_walls(scene.lower, scene.upper)) {
+    scene.walls.push_back(wall);
+  }
+  scene.gravity = gravity;
+  // Rows 2 apart, staggered by half the spacing: 1.4 between neighbouring pegs lets a ball of
+  // diameter 0.8 through.
+  for (int row = 0; row < 7; ++row) {
+    for (int k = 0; k < 9; ++k) {
+      testing::ReferenceBall peg;
+      peg.position = {1.5 + 2.0 * k + (row % 2 == 1 ? 1.0 : 0.0), 8.0 + 2.0 * row};
+      peg.radius = kPegRadius;
+      peg.mass = kImmovable;
+      scene.balls.push_back(peg);
+    }
+  }
+  std::mt19937_64 engine(203);
+  auto uniform = [&engine](double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(engine);
+  };
+  for (int row = 0; row < 3; ++row) {
+    for (int k = 0; k < 9; ++k) {
+      testing::ReferenceBall ball;
+      // Sites 2 apart with ±0.5 of jitter: at least 1 between centres, clear of the pegs' rows
+      // (the top one at 20) and of the walls.
+      ball.position = {1.5 + 2.0 * k + uniform(-0.5, 0.5), 23.0 + 2.0 * row + uniform(-0.5, 0.5)};
+      ball.velocity = {uniform(-3.0, 3.0), uniform(-3.0, 3.0)};
+      ball.radius = kBallRadius;
+      ball.mass = uniform(0.5, 2.0);
+      scene.balls.push_back(ball);
+    }
+  }
+  return scene;
+}
+
+TEST(WorldReference, GravityGaltonBoardContactByContact) {
+  const ReferenceScene scene = galton_board(kEarthGravity);
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(30.0, 3.0 * std::sqrt(2.0)));
+}
+
+// Columns of elastic balls of unequal masses dropped onto each other, two standing on immovable
+// pegs and two on the floor, every centre on its column's vertical line: head-on contacts in
+// quick succession (a ball squeezed between its neighbours meets them within a hop), exactly
+// vertical normals, and against the pegs the quartic gap of a falling ball and a fixed one.
+TEST(WorldReference, GravityColumnsOnPegsAndFloorContactByContact) {
+  ReferenceScene scene;
+  for (const testing::ReferenceWall& wall : testing::box_walls({0.0, 0.0}, {16.0, 30.0})) {
+    scene.walls.push_back(wall);
+  }
+  scene.gravity = kEarthGravity;
+  for (int column = 0; column < 4; ++column) {
+    const double x = 2.0 + 4.0 * column;
+    double top = 0.0;  // the highest point of what the column stands on
+    if (column % 2 == 0) {
+      testing::ReferenceBall peg;
+      peg.position = {x, 3.0};
+      peg.radius = 0.4;
+      peg.mass = kImmovable;
+      scene.balls.push_back(peg);
+      top = 3.4;
+    }
+    double y = top + 0.5;
+    for (int k = 0; k < 4; ++k) {
+      testing::ReferenceBall ball;
+      ball.radius = 0.5;
+      ball.mass = 1.0 + 0.25 * k;
+      // Gaps that differ from ball to ball and column to column, so no two contacts coincide.
+      y += 1.0 + 0.3 * (k + 1) + 0.07 * column;
+      ball.position = {x, y};
+      scene.balls.push_back(ball);
+    }
+  }
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(30.0, 10.0));
+}
+
+// A round bowl (the lower half of a circle: its inside, its outside and its two end points) in a
+// box, with tilted segments and a round bumper above it, and elastic balls dropped in.
+ReferenceScene bowl_scene(Vec2 gravity, std::uint64_t seed) {
+  ReferenceScene scene;
+  scene.lower = {-12.0, -12.0};
+  scene.upper = {12.0, 14.0};
+  for (const testing::ReferenceWall& wall : testing::box_walls(scene.lower, scene.upper)) {
+    scene.walls.push_back(wall);
+  }
+  scene.gravity = gravity;
+  scene.walls.push_back(
+      testing::arc_wall({{0.0, 0.0}, 10.0, std::numbers::pi, 2.0 * std::numbers::pi}));
+  scene.walls.push_back(testing::segment_wall({{-7.0, 6.0}, {-2.5, 3.5}}));
+  scene.walls.push_back(testing::segment_wall({{2.0, 8.5}, {7.5, 5.0}}));
+  scene.walls.push_back(testing::segment_wall({{-9.0, 11.0}, {-5.0, 12.5}}));
+  // A whole circle: a round bumper (from angle 0, as start + 2π − start can round above 2π).
+  scene.walls.push_back(testing::arc_wall({{1.0, 2.0}, 1.2, 0.0, 2.0 * std::numbers::pi}));
+  // An upside-down short arc: a cap balls meet from above and from below.
+  scene.walls.push_back(testing::arc_wall({{-4.0, -3.0}, 1.5, 0.3, 2.6}));
+  std::mt19937_64 engine(seed);
+  auto uniform = [&engine](double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(engine);
+  };
+  // Balls of radius 0.35 on sites 1.5 apart (±0.25 of jitter: at least 1 between centres) in the
+  // bowl's lower middle, where nothing else stands: the farthest site reaches 9.7 from the
+  // bowl's centre, inside its radius of 10, and the highest ball's top stays below −4, under the
+  // cap (all of which lies above y = −3).
+  for (int row = 0; row < 3; ++row) {
+    for (int k = 0; k < 7; ++k) {
+      testing::ReferenceBall ball;
+      ball.position = {-4.5 + 1.5 * k + uniform(-0.25, 0.25),
+                       -4.8 - 1.5 * row + uniform(-0.25, 0.25)};
+      const double angle = uniform(0.0, 2.0 * std::numbers::pi);
+      ball.velocity = Vec2{std::cos(angle), std::sin(angle)} * uniform(2.0, 12.0);
+      ball.radius = 0.35;
+      ball.mass = uniform(0.5, 2.0);
+      scene.balls.push_back(ball);
+    }
+  }
+  return scene;
+}
+
+TEST(WorldReference, GravityBowlAndAngledWallsContactByContact) {
+  const ReferenceScene scene = bowl_scene(kEarthGravity, 204);
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(26.0, 12.0));
+}
+
+// The same with gravity pulling sideways and a little down: balls are flung over the bowl's right
+// rim and its end point, onto the arc's outside and against the box's right wall.
+TEST(WorldReference, SidewaysGravityBowlAndAngledWallsContactByContact) {
+  const ReferenceScene scene = bowl_scene({9.0, -3.0}, 205);
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(26.0, 12.0));
+}
+
+// The hexagon of angled walls and arcs above, with its fast gas and a slanted gravity strong
+// enough to bend every path: over the time a ball takes to cross the scene at its starting top
+// speed, gravity alone would move it the scene's side.
+TEST(WorldReference, SlantedGravityAngledWallsAndArcsContactByContact) {
+  GasOptions options;
+  ReferenceScene scene = angled_walls_scene(206, options);
+  const double pull = 2.0 * options.max_speed * options.max_speed / options.side;
+  scene.gravity = Vec2{0.6, -0.8} * pull;
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kContactsCompared, tolerances_for(options));
+}
+
+// A periodic gas under gravity: no walls, balls fall through the cell's bottom into its top. Two
+// movable balls still meet along a straight relative path, but every ball's motion through the
+// grid (and its images) is a parabola.
+TEST(WorldReference, GravityPeriodicGasContactByContact) {
+  GasOptions options;
+  options.ball_count = 100;
+  options.side = 24.0;
+  options.periodic = true;
+  options.max_speed = 16.0;
+  ReferenceScene scene = testing::random_gas(options, 207);
+  scene.gravity = kEarthGravity;
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(options.side, options.max_speed));
+}
+
+// The same with immovable posts, which do not fall: against them a falling ball's gap is a
+// quartic, met through the cell's images as the balls wrap round and speed up.
+TEST(WorldReference, GravityPeriodicGasWithPostsContactByContact) {
+  GasOptions options;
+  options.ball_count = 64;
+  options.side = 24.0;
+  options.periodic = true;
+  options.max_speed = 8.0;
+  options.immovable_fraction = 0.2;
+  ReferenceScene scene = testing::random_gas(options, 208);
+  scene.gravity = {-2.0, -9.81};
+  SceneWorld built = build_world_under_gravity(scene);
+  expect_contact_by_contact_under_gravity(built, scene, kGravityContactsCompared,
+                                          gravity_tolerances(options.side, options.max_speed));
 }
 
 // ---- 2000 balls (CAROM_LONG_TESTS=1) -------------------------------------------------------

@@ -214,9 +214,9 @@ std::uint64_t run_scene_collisions(SceneWorld& scene_world, std::uint64_t count,
                                    std::vector<PottedBall>* potted = nullptr,
                                    double time_limit = std::numeric_limits<double>::infinity());
 
-// The world's state now as a scene to continue from: the same settings, walls and pockets, the
-// balls still in the world (positions and velocities now, names, colours, restitution kept), no
-// generators, and time = scene_world.time().
+// The world's state now as a scene to continue from: the same settings (gravity as it is now,
+// after any World::set_gravity), walls and pockets, the balls still in the world (positions and
+// velocities now, names, colours, restitution kept), no generators, and time = scene_world.time().
 [[nodiscard]] Scene capture_scene(const SceneWorld& scene_world);
 
 // ---- inspecting ----
@@ -227,6 +227,8 @@ struct SceneSummary {
   std::size_t walls = 0;  // segments, polyline segments and arcs
   std::size_t pockets = 0;
   double kinetic_energy = 0.0;
+  // −Σ m·gravity·p over movable balls, as World::potential_energy (0 without gravity).
+  double potential_energy = 0.0;
   Vec2 momentum;
   double ball_area = 0.0;                  // sum of π r² over balls
   std::optional<double> packing_fraction;  // ball_area / area of the box or cell

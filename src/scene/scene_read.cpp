@@ -73,8 +73,9 @@ SceneUnits read_units(const ObjectFields& fields) {
 WorldDef read_settings(const ObjectFields& fields) {
   WorldDef settings;
   if (!fields.has("world")) return settings;
-  const ObjectFields w(fields.source(), fields.at("world"), fields.path_of("world"),
-                       {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size"});
+  const ObjectFields w(
+      fields.source(), fields.at("world"), fields.path_of("world"),
+      {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size", "gravity"});
   const std::string boundary = w.optional_string("boundary").value_or("open");
   if (boundary == "open") {
     settings.boundary = Boundary::open;
@@ -104,6 +105,7 @@ WorldDef read_settings(const ObjectFields& fields) {
   }
   settings.collapse_time = non_negative(w, "collapse_time", 0.0);
   settings.cell_size = non_negative(w, "cell_size", 0.0);
+  settings.gravity = w.optional_vector("gravity").value_or(Vec2{});
   return settings;
 }
 

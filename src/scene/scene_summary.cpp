@@ -1,4 +1,4 @@
-// What `carom info` shows: counts, energy, momentum, packing fraction and the smallest gap.
+// What `carom info` shows: counts, energies, momentum, packing fraction and the smallest gap.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -31,6 +31,7 @@ SceneSummary summarize(const Scene& scene, std::span<const SceneBall> balls) {
       continue;
     }
     s.kinetic_energy += 0.5 * b.mass * length_squared(b.velocity);
+    s.potential_energy -= b.mass * dot(scene.world.gravity, b.position);
     s.momentum += b.velocity * b.mass;
   }
   if (scene.world.boundary != Boundary::open) {

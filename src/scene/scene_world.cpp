@@ -166,6 +166,8 @@ Scene capture_scene(const SceneWorld& sw) {
   scene.balls.clear();
   scene.generators.clear();
   scene.time = sw.time();
+  // set_gravity may have changed it since the world was built.
+  scene.world.gravity = sw.world.def().gravity;
   for (std::size_t i = 0; i < sw.balls.size(); ++i) {
     const BallId id = sw.balls[i];
     if (id.is_null() || !sw.world.contains(id)) continue;

@@ -1,6 +1,7 @@
 // Writing a scene as JSON. Doubles are written in their shortest round-trip form (std::to_chars),
 // always with a '.' or an exponent so that they read back as doubles ("-0.0" stays negative
 // zero), hence parse_scene(to_json_text(s)) gives s back bit for bit.
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -23,6 +24,11 @@ std::string num(double value) {
 std::string str(const std::string& text) { return nlohmann::json(text).dump(); }
 
 std::string vec(Vec2 v) { return "[" + num(v.x) + ", " + num(v.y) + "]"; }
+
+// Whether v differs from +0 in any bit (negative zero included, so that it round-trips too).
+bool any_bit_set(Vec2 v) {
+  return v.x != 0.0 || v.y != 0.0 || std::signbit(v.x) || std::signbit(v.y);
+}
 
 // Members of one JSON object on one line: "key": value, ...
 class Line {
@@ -124,14 +130,16 @@ std::string to_json_text(const Scene& scene) {
                                   .add("mass", str(scene.units.mass))
                                   .done();
   const WorldDef& w = scene.world;
-  out += ",\n  \"world\": " + Line()
-                                  .add("boundary", boundary_text(w.boundary))
-                                  .add("lower", vec(w.lower))
-                                  .add("upper", vec(w.upper))
-                                  .add("restitution", num(w.restitution))
-                                  .add("collapse_time", num(w.collapse_time))
-                                  .add("cell_size", num(w.cell_size))
-                                  .done();
+  Line world;
+  world.add("boundary", boundary_text(w.boundary))
+      .add("lower", vec(w.lower))
+      .add("upper", vec(w.upper))
+      .add("restitution", num(w.restitution))
+      .add("collapse_time", num(w.collapse_time))
+      .add("cell_size", num(w.cell_size));
+  // Only when set, so that a scene without gravity writes the same bytes as a file without the key.
+  if (any_bit_set(w.gravity)) world.add("gravity", vec(w.gravity));
+  out += ",\n  \"world\": " + world.done();
   out += ",\n  \"time\": " + num(scene.time);
   write_array(out, "balls", scene.balls, ball_line);
   write_array(out, "segments", scene.segments,

@@ -44,6 +44,26 @@ TEST(RenderPlot, EnergyOfAnElasticBoxIsFlatAtEverySample) {
   EXPECT_THAT(svg, ::testing::Not(HasSubstr("potted")));
 }
 
+// Under gravity the plot shows the kinetic, potential and total energy; the total is what elastic
+// contacts keep, measured against the largest kinetic energy (the potential's zero is arbitrary).
+TEST(RenderPlot, EnergyUnderGravityShowsEachPartAndTheTotal) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "drop.json", R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 20], "gravity": [0, -10]},
+    "balls": [{"position": [3, 15]}, {"position": [7, 5], "velocity": [1, 0]}]})");
+  const ToolRun run = run_render({"render", scene, "--plot", "energy", "--until", "5", "--out",
+                                  (dir / "energy.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string svg = read_file(dir / "energy.svg");
+  EXPECT_THAT(svg, HasSubstr("Energy: drop.json"));
+  for (const char* series : {">kinetic energy<", ">potential energy<", ">total energy<"}) {
+    EXPECT_THAT(svg, HasSubstr(series)) << series;
+  }
+  EXPECT_EQ(count_of(svg, "<polyline"), 3);
+  EXPECT_EQ(polyline_points(svg), kPlotSamples + 1);
+  EXPECT_THAT(svg, HasSubstr("largest change |T(t) − T(0)| / max K = "));
+}
+
 TEST(RenderPlot, RateCountsTheOneContactOfTheTwoBalls) {
   const ScratchDir dir;
   const std::string scene = write_test_scene(dir, "two.json", kTwoBallsScene);

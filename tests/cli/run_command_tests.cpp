@@ -20,6 +20,7 @@ namespace carom::cli::test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 TEST(RunCommand, TwoBallsUntilWithStatsAsJson) {
   const ToolRun run =
@@ -219,6 +220,88 @@ TEST(InfoCommand, TextNamesTheClosestPair) {
   // The racked balls are 1e-4 apart (examples/billiards.json).
   EXPECT_THAT(run.out, HasSubstr("smallest gap      0.0001 ("));
   EXPECT_THAT(run.out, HasSubstr("valid             yes"));
+}
+
+// Without gravity the text has the one energy line; the JSON always gives every energy (potential
+// 0).
+TEST(RunCommand, StatsWithoutGravityAddTheEnergyOfGravityToJsonOnly) {
+  const ToolRun text =
+      run_carom({"run", example("newtons-cradle.json"), "--until", "10", "--stats"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("\nenergy          "));
+  for (const char* absent : {"potential", "total", "kinetic", "gravity"}) {
+    EXPECT_THAT(text.out, Not(HasSubstr(absent))) << absent;
+  }
+  const ToolRun as_json =
+      run_carom({"run", example("newtons-cradle.json"), "--until", "10", "--stats", "--json"});
+  ASSERT_EQ(as_json.exit_code, 0) << as_json.err;
+  const auto stats = nlohmann::json::parse(as_json.out);
+  EXPECT_EQ(stats["potential_energy_before"], 0.0);
+  EXPECT_EQ(stats["potential_energy_after"], 0.0);
+  EXPECT_EQ(stats["total_energy_before"], stats["energy_before"]);
+  EXPECT_EQ(stats["total_energy_after"], stats["energy_after"]);
+  EXPECT_EQ(stats["total_energy_change"], stats["energy_change"]);
+  EXPECT_EQ(stats["total_energy_conserved"], true);
+  EXPECT_EQ(stats["conservative"], true);
+}
+
+// A dilute elastic gas under gravity: kinetic and potential energy trade, the total stays to
+// rounding. Needs the world's parabolic flight (it runs 20 s of falls and bounces).
+TEST(RunCommand, GravityDropKeepsItsTotalEnergy) {
+  const ToolRun run =
+      run_carom({"run", example("gravity-drop.json"), "--until", "20", "--stats", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto stats = nlohmann::json::parse(run.out);
+  EXPECT_EQ(stats["balls_at_end"], 20);
+  EXPECT_GT(stats["ball_wall"].get<int>(), 20);  // every ball reaches the floor
+  // Scene heights 2 + 1.8·i, i < 20, unit masses: U = 9.81 · Σ y = 9.81 · 382, to rounding.
+  EXPECT_NEAR(stats["potential_energy_before"].get<double>(), 9.81 * 382.0, 1e-9);
+  EXPECT_EQ(stats["conservative"], false);  // gravity changes the kinetic energy and momentum
+  EXPECT_EQ(stats["total_energy_conserved"], true);
+  EXPECT_GT(std::abs(stats["energy_change"].get<double>()), 1.0);
+  // Relative to the kinetic energy at the start (7.7 against a total of 3755): a few hundred
+  // contacts each round the total by a few ulps of 3755, far below 1e-10 of it.
+  EXPECT_LT(std::abs(stats["total_energy_change"].get<double>()), 1e-10);
+  EXPECT_DOUBLE_EQ(
+      stats["total_energy_after"].get<double>(),
+      stats["energy_after"].get<double>() + stats["potential_energy_after"].get<double>());
+  const ToolRun text = run_carom({"run", example("gravity-drop.json"), "--until", "20", "--stats"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("\nkinetic energy  7.695 -> "));
+  EXPECT_THAT(text.out, HasSubstr("\npotential       3747.42 -> "));
+  EXPECT_THAT(text.out, HasSubstr("\ntotal energy    3755.12 -> 3755.12 (drift "));
+  EXPECT_THAT(text.out, HasSubstr("\nmomentum        (1.7, 0) -> "));
+}
+
+TEST(InfoCommand, GravityIsNamedWithTheEnergyItHolds) {
+  const ToolRun text = run_carom({"info", example("gravity-drop.json")});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("world             box [0, 20] x [0, 40], restitution 1, "
+                                  "gravity (0, -9.81)\n"));
+  EXPECT_THAT(text.out, HasSubstr("kinetic energy    7.695\n"
+                                  "potential energy  3747.42\n"
+                                  "total energy      3755.12\n"));
+  const ToolRun as_json = run_carom({"info", example("gravity-drop.json"), "--json"});
+  ASSERT_EQ(as_json.exit_code, 0) << as_json.err;
+  const auto stats = nlohmann::json::parse(as_json.out);
+  EXPECT_EQ(stats["gravity"], nlohmann::json::array({0.0, -9.81}));
+  EXPECT_NEAR(stats["potential_energy"].get<double>(), 9.81 * 382.0, 1e-9);
+  EXPECT_EQ(stats["total_energy"].get<double>(),
+            stats["kinetic_energy"].get<double>() + stats["potential_energy"].get<double>());
+}
+
+TEST(InfoCommand, WithoutGravityTheTextNamesNone) {
+  const ToolRun text = run_carom({"info", example("newtons-cradle.json")});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("world             box [0, 40] x [0, 6], restitution 1\n"));
+  for (const char* absent : {"gravity", "potential", "total"}) {
+    EXPECT_THAT(text.out, Not(HasSubstr(absent))) << absent;
+  }
+  const ToolRun as_json = run_carom({"info", example("newtons-cradle.json"), "--json"});
+  const auto stats = nlohmann::json::parse(as_json.out);
+  EXPECT_EQ(stats["gravity"], nlohmann::json::array({0.0, 0.0}));
+  EXPECT_EQ(stats["potential_energy"], 0.0);
+  EXPECT_EQ(stats["total_energy"], stats["kinetic_energy"]);
 }
 
 }  // namespace

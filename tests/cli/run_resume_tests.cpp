@@ -142,6 +142,31 @@ TEST(RunResume, BilliardsWithPocketsResumedEndsBitIdentical) {
   EXPECT_EQ(read_file(dir / "resumed.json"), read_file(dir / "first.json"));
 }
 
+// Under gravity the resumed run ends as the straight one, and its --stats report the kinetic and
+// potential energy at the first run's start, kept in the checkpoint.
+TEST(RunResume, GravityRunResumedReportsTheEnergyAtTheFirstStart) {
+  const ScratchDir dir;
+  const std::string checkpoint = (dir / "drop.ckpt").string();
+  const ToolRun first = run_carom({"run", example("gravity-drop.json"), "--until", "20",
+                                   "--checkpoint", checkpoint, "--checkpoint-every", "10", "--save",
+                                   (dir / "first.json").string(), "--stats", "--json"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const ToolRun resumed =
+      run_carom({"run", "--resume", checkpoint + ".prev", "--until", "20", "--save",
+                 (dir / "resumed.json").string(), "--stats", "--json"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(read_file(dir / "resumed.json"), read_file(dir / "first.json"));
+  EXPECT_THAT(read_file(dir / "first.json"), HasSubstr("\"gravity\": [0.0, -9.81]"));
+  const auto a = nlohmann::json::parse(first.out);
+  const auto b = nlohmann::json::parse(resumed.out);
+  for (const char* key :
+       {"energy_before", "potential_energy_before", "total_energy_before", "energy_after",
+        "potential_energy_after", "total_energy_after", "total_energy_change", "collisions"}) {
+    EXPECT_EQ(a[key], b[key]) << key;
+  }
+  EXPECT_GT(b["potential_energy_before"].get<double>(), 3000.0);
+}
+
 TEST(RunResume, CheckpointsRotateToPrev) {
   const UntilRuns runs;
   ASSERT_EQ(runs.first.exit_code, 0) << runs.first.err;

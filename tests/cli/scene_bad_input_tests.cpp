@@ -117,6 +117,23 @@ INSTANTIATE_TEST_SUITE_P(
                      ", \"generators\": [{\"placement\": \"random\", \"count\": 100,"
                      " \"packing_fraction\": 0.6}]}",
                  {"generators[0]", "random placement cannot reach packing fraction 0.6"}},
+        BadScene{"GravityWithOneNumber",
+                 "{\"world\": {\"boundary\": \"open\",\n  \"gravity\": [1]}}",
+                 {"scene.json:2:14: world.gravity = [1]",
+                  "must be an array of two numbers [x, y], not an array of 1"}},
+        BadScene{
+            "GravityAsAWord",
+            "{\"world\": {\"gravity\": \"down\"}}",
+            {"world.gravity = \"down\"", "must be an array of two numbers [x, y], not a string"}},
+        BadScene{"GravityBeyondADouble",
+                 "{\"world\": {\"gravity\": [0, 1e999]}}",
+                 {"world.gravity[1] = 1e999", "beyond the range of a double"}},
+        BadScene{"GravityInfinityAsString",
+                 "{\"world\": {\"gravity\": [\"-Infinity\", 0]}}",
+                 {"world.gravity[0] = \"-Infinity\"", "must be a number, not a string"}},
+        BadScene{"GravityMisspelt",
+                 "{\"world\": {\"gravty\": [0, -9.81]}}",
+                 {"world.gravty", "unknown key", "did you mean \"gravity\"?"}},
         BadScene{"NotAnObject", "[1, 2, 3]", {"must be an object, not an array"}}),
     [](const ::testing::TestParamInfo<BadScene>& param_info) { return param_info.param.name; });
 

@@ -26,9 +26,16 @@ refused = {
     "restitution above 1": {"balls": [{"position": [0, 0], "restitution": 1.5}]},
     "nan as a string": {"balls": [{"position": ["nan", 0]}]},
     "box without bounds": {"world": {"boundary": "box"}},
+    "gravity with one number": {"world": {"gravity": [1]}},
+    "gravity as a word": {"world": {"gravity": "down"}},
+    "gravity with a string for a number": {"world": {"gravity": [0, "-inf"]}},
     "generator with radius and packing fraction": {
         "generators": [{"count": 3, "radius": 1, "packing_fraction": 0.1}]},
 }
+# And a scene with gravity that carom reads is valid under it.
+if not validator.is_valid({"world": {"boundary": "open", "gravity": [0, -9.81]}}):
+    failures.append("the schema refuses a scene with gravity that carom reads")
+
 for name, scene in refused.items():
     if validator.is_valid(scene):
         failures.append(f"the schema accepts a scene carom refuses: {name}")

@@ -125,6 +125,50 @@ TEST(SceneErrors, RestitutionOutsideUnitInterval) {
   EXPECT_EQ(error_of("{\"world\": {\"restitution\": -0.1}}").path, "world.restitution");
 }
 
+TEST(SceneErrors, GravityMustBeTwoFiniteNumbers) {
+  const auto one = error_of("{\"world\": {\"boundary\": \"open\",\n  \"gravity\": [1]}}");
+  EXPECT_EQ(one.file, "test.json");
+  EXPECT_EQ(one.line, 2U);
+  EXPECT_EQ(one.column, 14U);  // the value
+  EXPECT_EQ(one.path, "world.gravity");
+  EXPECT_EQ(one.value, "[1]");
+  EXPECT_EQ(one.problem, "must be an array of two numbers [x, y], not an array of 1");
+  EXPECT_EQ(message_of("{\"world\": {\"boundary\": \"open\",\n  \"gravity\": [1]}}"),
+            "test.json:2:14: world.gravity = [1]: must be an array of two numbers [x, y], not an "
+            "array of 1");
+  EXPECT_EQ(error_of("{\"world\": {\"gravity\": [0, -9.81, 0]}}").problem,
+            "must be an array of two numbers [x, y], not an array of 3");
+
+  const auto word = error_of("{\"world\": {\"gravity\": \"down\"}}");
+  EXPECT_EQ(word.path, "world.gravity");
+  EXPECT_EQ(word.value, "\"down\"");
+  EXPECT_EQ(word.problem, "must be an array of two numbers [x, y], not a string");
+  EXPECT_THAT(error_of("{\"world\": {\"gravity\": -9.81}}").problem, HasSubstr("not a number"));
+
+  // Beyond a double it would read as infinity.
+  const auto huge = error_of("{\"world\": {\"gravity\": [0, 1e999]}}");
+  EXPECT_EQ(huge.path, "world.gravity[1]");
+  EXPECT_EQ(huge.value, "1e999");
+  EXPECT_THAT(huge.problem, HasSubstr("beyond the range of a double"));
+  EXPECT_EQ(error_of("{\"world\": {\"gravity\": [-1e999, 0]}}").path, "world.gravity[0]");
+  const auto infinite = error_of("{\"world\": {\"gravity\": [0, \"-inf\"]}}");
+  EXPECT_EQ(infinite.path, "world.gravity[1]");
+  EXPECT_EQ(infinite.value, "\"-inf\"");
+  EXPECT_EQ(infinite.problem,
+            "must be a number, not a string (JSON numbers have no NaN or infinity)");
+  EXPECT_EQ(error_of("{\"world\": {\"gravity\": [null, 0]}}").path, "world.gravity[0]");
+}
+
+TEST(SceneErrors, MisspeltGravityIsSuggested) {
+  const auto d = error_of("{\"world\": {\"boundary\": \"open\", \"gravty\": [0, -9.81]}}");
+  EXPECT_EQ(d.path, "world.gravty");
+  EXPECT_EQ(d.problem, "unknown key");
+  EXPECT_EQ(d.suggestion, "gravity");
+  EXPECT_EQ(error_of("{\"world\": {\"Gravity\": [0, -1]}}").suggestion, "gravity");
+  // The other world keys are still suggested with gravity among the known ones.
+  EXPECT_EQ(error_of("{\"world\": {\"restitutoin\": 1}}").suggestion, "restitution");
+}
+
 TEST(SceneErrors, OverlappingBallsNameBothAndTheOverlap) {
   const std::string message = message_of(
       "{\"balls\": [{\"name\": \"cue\", \"position\": [0, 0], \"radius\": 1},\n"

@@ -4,8 +4,11 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "carom/scene.hpp"
 
@@ -129,6 +132,64 @@ TEST(SceneRoundTrip, GeneratorsPocketsPolylinesArcsAndSettingsSurvive) {
   EXPECT_TRUE(scene.generators[0].velocities.zero_momentum);
   EXPECT_EQ(scene.pockets[0].name, "corner");
   EXPECT_TRUE(scene.polylines[0].closed);
+}
+
+TEST(SceneRoundTrip, GravityReadsBackBitIdentical) {
+  std::mt19937_64 random(20261201);
+  std::vector<Vec2> values{{0.0, -9.81}, {-0.0, 0.0}, {0.0, -0.0}, {1e-300, -1e300}};
+  for (int i = 0; i < 50; ++i) values.push_back({random_double(random), random_double(random)});
+  for (const Vec2 gravity : values) {
+    Scene scene;
+    scene.world.gravity = gravity;
+    const std::string text = to_json_text(scene);
+    EXPECT_NE(text.find("\"gravity\": ["), std::string::npos) << text;
+    const Scene back = parse_scene(text, "round-trip");
+    EXPECT_EQ(bits(back.world.gravity.x), bits(gravity.x)) << text;
+    EXPECT_EQ(bits(back.world.gravity.y), bits(gravity.y)) << text;
+    EXPECT_EQ(to_json_text(back), text);
+  }
+}
+
+TEST(SceneRoundTrip, GravityIsWrittenLastInTheWorldLine) {
+  Scene scene;
+  scene.world.gravity = {0.0, -9.81};
+  EXPECT_NE(to_json_text(scene).find(
+                "\"collapse_time\": 0.0, \"cell_size\": 0.0, \"gravity\": [0.0, -9.81]}"),
+            std::string::npos);
+  const Scene read = parse_scene(R"({"world": {"gravity": [0, -9.81]}})");
+  EXPECT_EQ(read.world.gravity, (Vec2{0.0, -9.81}));
+  // Absent is zero.
+  EXPECT_EQ(parse_scene(R"({"world": {"boundary": "open"}})").world.gravity, Vec2{});
+  EXPECT_EQ(parse_scene("{}").world.gravity, Vec2{});
+}
+
+// A scene without gravity (or with gravity +0) writes no gravity key, so its text is that of the
+// same scene with the field left out, and saved scenes and the reference hashes' inputs stay put.
+TEST(SceneRoundTrip, SceneWithoutGravityWritesNoGravityKey) {
+  const std::string text = R"({"world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10],
+    "gravity": [0, 0]}, "balls": [{"position": [2, 5], "velocity": [1, 0]}]})";
+  const std::string expected =
+      "{\n"
+      "  \"carom_scene\": 1,\n"
+      "  \"units\": {\"length\": \"m\", \"time\": \"s\", \"mass\": \"kg\"},\n"
+      "  \"world\": {\"boundary\": \"box\", \"lower\": [0.0, 0.0], \"upper\": [10.0, 10.0], "
+      "\"restitution\": 1.0, \"collapse_time\": 0.0, \"cell_size\": 0.0},\n"
+      "  \"time\": 0.0,\n"
+      "  \"balls\": [\n"
+      "    {\"position\": [2.0, 5.0], \"velocity\": [1.0, 0.0], \"radius\": 1.0, \"mass\": 1.0}\n"
+      "  ]\n"
+      "}\n";
+  EXPECT_EQ(to_json_text(parse_scene(text)), expected);
+  for (const auto& entry : std::filesystem::directory_iterator(CAROM_EXAMPLES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    const Scene scene = load_scene(entry.path());
+    if (scene.world.gravity != Vec2{}) continue;
+    const std::string written = to_json_text(scene);
+    const std::size_t world = written.find("\n  \"world\": {");
+    ASSERT_NE(world, std::string::npos) << entry.path();
+    const std::string world_line = written.substr(world, written.find('\n', world + 1) - world);
+    EXPECT_EQ(world_line.find("gravity"), std::string::npos) << entry.path();
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "carom/scene.hpp"
 
@@ -138,6 +139,45 @@ TEST(SceneWorld, OverlapsOfARoundingAreTouchingAndGetSeparated) {
   EXPECT_THROW(static_cast<void>(
                    parse_scene(R"({"balls": [{"position": [0, 0]}, {"position": [1.99999, 0]}]})")),
                SceneError);
+}
+
+// The scene's gravity is the world's, and the summary's potential energy is the world's: −Σ m·g·p
+// over movable balls (the immovable ball and the pocket do not count).
+TEST(SceneWorld, GravityReachesTheWorldAndTheSummary) {
+  const Scene scene = parse_scene(R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [20, 40], "gravity": [0.5, -9.81]},
+    "balls": [{"position": [3, 4], "velocity": [1, 2], "mass": 2},
+              {"position": [10, 30], "radius": 0.5},
+              {"position": [15, 10], "mass": "immovable"}],
+    "pockets": [{"position": [18, 38]}]})");
+  const SceneSummary s = summarize(scene, expand_balls(scene));
+  const double expected = -(2.0 * (0.5 * 3.0 - 9.81 * 4.0) + 1.0 * (0.5 * 10.0 - 9.81 * 30.0));
+  EXPECT_DOUBLE_EQ(s.potential_energy, expected);
+  EXPECT_DOUBLE_EQ(s.kinetic_energy, 5.0);
+  const SceneWorld sw = make_world(scene);
+  EXPECT_EQ(sw.world.def().gravity, (Vec2{0.5, -9.81}));
+  EXPECT_DOUBLE_EQ(sw.world.potential_energy(), expected);
+
+  const Scene flat = parse_scene(R"({"balls": [{"position": [3, 4], "velocity": [1, 0]}]})");
+  EXPECT_EQ(summarize(flat, expand_balls(flat)).potential_energy, 0.0);
+  const SceneWorld flat_world = make_world(flat);
+  EXPECT_EQ(flat_world.world.def().gravity, Vec2{});
+  EXPECT_EQ(flat_world.world.potential_energy(), 0.0);
+}
+
+// World::set_gravity between steps is what a captured scene (`carom run --save`) holds.
+TEST(SceneWorld, CapturedSceneHoldsTheGravityNow) {
+  SceneWorld sw = make_world(parse_scene(R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10], "gravity": [0, -9.81]},
+    "balls": [{"position": [5, 5]}]})"));
+  EXPECT_EQ(capture_scene(sw).world.gravity, (Vec2{0.0, -9.81}));
+  sw.world.set_gravity({1.5, -0.25});
+  const Scene captured = capture_scene(sw);
+  EXPECT_EQ(captured.world.gravity, (Vec2{1.5, -0.25}));
+  const SceneWorld again = make_world(parse_scene(to_json_text(captured)));
+  EXPECT_EQ(again.world.def().gravity, (Vec2{1.5, -0.25}));
+  sw.world.set_gravity({});
+  EXPECT_EQ(to_json_text(capture_scene(sw)).find("gravity"), std::string::npos);
 }
 
 }  // namespace

@@ -50,6 +50,9 @@ int run(const InfoOptions& options) {
     json["packing_fraction"] =
         s.packing_fraction ? nlohmann::ordered_json(*s.packing_fraction) : nullptr;
     json["kinetic_energy"] = s.kinetic_energy;
+    json["potential_energy"] = s.potential_energy;
+    json["total_energy"] = s.kinetic_energy + s.potential_energy;
+    json["gravity"] = {scene.world.gravity.x, scene.world.gravity.y};
     json["momentum"] = {s.momentum.x, s.momentum.y};
     if (s.smallest_gap) {
       json["smallest_gap"] = {
@@ -65,8 +68,11 @@ int run(const InfoOptions& options) {
   if (!scene.description.empty()) text += "description       " + scene.description + "\n";
   text += "units             length " + scene.units.length + ", time " + scene.units.time +
           ", mass " + scene.units.mass + "\n";
+  // Gravity is named only when set: most scenes have none, and their line stays short.
+  const bool gravity = scene.world.gravity != Vec2{};
   text += "world             " + boundary_text(scene.world) + ", restitution " +
-          readable(scene.world.restitution) + "\n";
+          readable(scene.world.restitution) +
+          (gravity ? ", gravity " + readable(scene.world.gravity) : "") + "\n";
   text += "time              " + readable(scene.time) + "\n";
   text += "balls             " + std::to_string(s.balls) + " (" + std::to_string(generated) +
           " generated, " + std::to_string(s.immovable) + " immovable)\n";
@@ -74,6 +80,10 @@ int run(const InfoOptions& options) {
   text += "pockets           " + std::to_string(s.pockets) + "\n";
   if (s.packing_fraction) text += "packing fraction  " + readable(*s.packing_fraction) + "\n";
   text += "kinetic energy    " + readable(s.kinetic_energy) + "\n";
+  if (gravity) {
+    text += "potential energy  " + readable(s.potential_energy) + "\n";
+    text += "total energy      " + readable(s.kinetic_energy + s.potential_energy) + "\n";
+  }
   text += "momentum          " + readable(s.momentum) + "\n";
   if (s.smallest_gap) {
     text += "smallest gap      " + readable(*s.smallest_gap) + " (" +
@@ -94,10 +104,11 @@ Command add_info_command(CLI::App& app) {
   verb->footer(
       "Loads and checks the scene (docs/scenes.md), places its generators' balls, and\n"
       "prints the counts, the packing fraction (in a box or periodic cell), the kinetic\n"
-      "energy and momentum of the movable balls, and the smallest gap between two balls\n"
-      "(found with a grid: beyond 2000 balls only pairs within two of the largest\n"
-      "diameters are compared). An invalid scene gets one message naming the file, line,\n"
-      "column, field and value, and exit status 2.\n\n"
+      "energy (with gravity, the potential and total energy too) and momentum of the\n"
+      "movable balls, and the smallest gap between two balls (found with a grid: beyond\n"
+      "2000 balls only pairs within two of the largest diameters are compared). An\n"
+      "invalid scene gets one message naming the file, line, column, field and value,\n"
+      "and exit status 2.\n\n"
       "Example:\n"
       "  carom info examples/periodic-gas.json");
   auto options = std::make_shared<InfoOptions>();

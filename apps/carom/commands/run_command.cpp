@@ -224,10 +224,10 @@ std::size_t live_balls(const SceneWorld& built) {
   return count;
 }
 
-// Whether energy and momentum should stay as they are: every restitution 1, no pockets, and no
-// immovable ball moving (which does work on the balls it meets). Otherwise their changes are
+// Whether the total energy should stay as it is: every restitution 1, no pockets, and no
+// immovable ball moving (which does work on the balls it meets). Otherwise its changes are
 // physics, not numerical drift.
-bool conservative(const SceneWorld& built) {
+bool keeps_total_energy(const SceneWorld& built) {
   const Scene& scene = built.scene;
   if (!scene.pockets.empty() || scene.world.restitution != 1.0) return false;
   for (const SceneBall& ball : scene.balls) {
@@ -573,6 +573,7 @@ Checkpoint starting_point(const RunOptions& options, RunPlan& plan) {
     p.run_start_time = built.time();
     p.balls_at_start = live_balls(built);
     p.energy_before = built.world.kinetic_energy();
+    p.potential_before = built.world.potential_energy();
     p.momentum_before_x = built.world.momentum().x;
     p.momentum_before_y = built.world.momentum().y;
     p.movable_mass = movable_mass(built);
@@ -614,11 +615,15 @@ int run(const RunOptions& options) {
   check_room_for_outputs(options, plan, live_balls(built), built.time());
   RunOutcome outcome;
   outcome.scene = p.scene_file;
-  outcome.conservative = conservative(built);
+  outcome.gravity = built.world.def().gravity != Vec2{};
+  outcome.total_energy_conserved = keeps_total_energy(built);
+  // Gravity changes the kinetic energy and the momentum as it should; only the total is kept.
+  outcome.conservative = outcome.total_energy_conserved && !outcome.gravity;
   outcome.setup_seconds = seconds_since(setup_start);
   outcome.balls_at_start = p.balls_at_start;
   outcome.start_time = p.run_start_time;
   outcome.energy_before = p.energy_before;
+  outcome.potential_before = p.potential_before;
   outcome.momentum_before = {p.momentum_before_x, p.momentum_before_y};
   outcome.movable_mass = p.movable_mass;
 
@@ -645,6 +650,7 @@ int run(const RunOptions& options) {
   outcome.end_time = built.time();
   outcome.balls_at_end = live_balls(built);
   outcome.energy_after = built.world.kinetic_energy();
+  outcome.potential_after = built.world.potential_energy();
   outcome.momentum_after = built.world.momentum();
 
   // An output written to standard output keeps it to itself: the summary goes to stderr.
@@ -709,8 +715,9 @@ Command add_run_command(CLI::App& app) {
       "                  the whole run. A damaged checkpoint is refused (exit 2). Details:\n"
       "                  docs/checkpoints.md.\n"
       "  --stats         collisions, collisions per second, energy and momentum change\n"
-      "                  (\"drift\" in a scene that conserves them), wall time, and why a run\n"
-      "                  stopped short (--json: one JSON object, \"stopped\": null or one of\n"
+      "                  (\"drift\" in a scene that conserves them), with gravity the\n"
+      "                  potential and total energy too, wall time, and why a run stopped\n"
+      "                  short (--json: one JSON object, \"stopped\": null or one of\n"
       "                  \"no_more_contacts\", \"time_limit\", \"interrupted\").\n"
       "An output whose estimated size exceeds its folder's free space is refused before\n"
       "the run. A progress bar is drawn on stderr when it is a terminal (--quiet: none);\n"

@@ -16,6 +16,7 @@ struct Sample {
   double time;  // since the start
   double energy;
   Vec2 momentum;
+  double potential;  // of gravity; 0 without it
 };
 
 struct Run {
@@ -33,7 +34,7 @@ Run run_scene(const Scene& scene, double until) {
   run.start_time = scene_world.start_time;
   const auto sample = [&] {
     run.samples.push_back({scene_world.world.time(), scene_world.world.kinetic_energy(),
-                           scene_world.world.momentum()});
+                           scene_world.world.momentum(), scene_world.world.potential_energy()});
   };
   sample();
   for (int i = 1; i <= kPlotSamples; ++i) {
@@ -66,6 +67,35 @@ TimePlotSpec energy_plot(const Scene& scene, const Run& run) {
           "energy (" + energy_unit(scene.units) + ")",
           {series},
           true};
+}
+
+// With gravity the kinetic energy rises and falls as the balls do: the total is what is kept.
+TimePlotSpec energies_plot(const Scene& scene, const Run& run) {
+  TimePlotSeries kinetic{"kinetic energy", "#1f4e9c", {}, false};
+  TimePlotSeries potential{"potential energy", "#c03030", {}, false};
+  TimePlotSeries total{"total energy", "#202020", {}, false};
+  const Sample& first = run.samples.front();
+  const double t0 = first.energy + first.potential;
+  double drift = 0.0;
+  double largest_kinetic = 0.0;
+  for (const Sample& s : run.samples) {
+    kinetic.points.push_back({s.time, s.energy});
+    potential.points.push_back({s.time, s.potential});
+    total.points.push_back({s.time, s.energy + s.potential});
+    drift = std::max(drift, std::abs(s.energy + s.potential - t0));
+    largest_kinetic = std::max(largest_kinetic, s.energy);
+  }
+  // The potential's zero is arbitrary, so the change is measured against the kinetic energy.
+  const std::string change =
+      largest_kinetic > 0.0
+          ? "largest change |T(t) − T(0)| / max K = " + readable(drift / largest_kinetic)
+          : "largest change |T(t) − T(0)| = " + readable(drift);
+  return {"Energy",
+          change + (run.potted.empty() ? "" : "; potted balls take theirs away"),
+          "time (" + scene.units.time + ")",
+          "energy (" + energy_unit(scene.units) + ")",
+          {kinetic, potential, total},
+          false};
 }
 
 TimePlotSpec momentum_plot(const Scene& scene, const Run& run) {
@@ -136,7 +166,7 @@ std::string render_plot(const Scene& scene, PlotKind kind, double until, const s
   TimePlotSpec spec;
   switch (kind) {
     case PlotKind::energy:
-      spec = energy_plot(scene, run);
+      spec = scene.world.gravity == Vec2{} ? energy_plot(scene, run) : energies_plot(scene, run);
       break;
     case PlotKind::momentum:
       spec = momentum_plot(scene, run);

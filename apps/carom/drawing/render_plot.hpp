@@ -10,8 +10,9 @@ namespace carom::cli {
 enum class PlotKind { energy, momentum, rate };
 
 // Runs the scene from its start for `until` time units and plots what was asked: the kinetic
-// energy or the momentum (x, y and its length) at kPlotSamples evenly spaced times, or the
-// contacts per time unit (ball–ball, ball–wall, potted) in kRateBins bins. title names the scene.
+// energy (with gravity the potential and total energy too) or the momentum (x, y and its length) at
+// kPlotSamples evenly spaced times, or the contacts per time unit (ball–ball, ball–wall, potted) in
+// kRateBins bins. title names the scene.
 [[nodiscard]] std::string render_plot(const Scene& scene, PlotKind kind, double until,
                                       const std::string& title);
 

@@ -20,8 +20,9 @@ namespace carom::cli {
 namespace {
 
 constexpr std::string_view kMagic = "CAROMCKP";
-// Version 2 added the time limit and the step in progress; version 1 files read as having neither.
-constexpr std::uint32_t kVersion = 2;
+// Version 2 added the time limit and the step in progress, version 3 the potential energy at the
+// start; older files read as having none of what came after them.
+constexpr std::uint32_t kVersion = 3;
 constexpr std::uint32_t kOldestVersion = 1;
 // magic, version, content size, checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8;
@@ -130,6 +131,7 @@ void put_progress(Writer& w, const RunProgress& p) {
   w.put(p.momentum_before_y);
   w.put(p.movable_mass);
   w.put_text(p.scene_file);
+  w.put(p.potential_before);
 }
 
 bool get_flag(Reader& r, const char* what) {
@@ -173,6 +175,7 @@ RunProgress get_progress(Reader& r, std::uint32_t version) {
   p.momentum_before_y = r.get<double>("the momentum at start");
   p.movable_mass = r.get<double>("the movable mass");
   p.scene_file = std::string(r.get_text("the scene file name"));
+  if (version >= 3) p.potential_before = r.get<double>("the potential energy at start");
   return p;
 }
 

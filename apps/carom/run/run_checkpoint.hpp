@@ -43,7 +43,8 @@ struct RunProgress {
   double last_frame_time = 0.0;
   // The state at the first run's start, so that --stats reports drift over the whole run.
   std::uint64_t balls_at_start = 0;
-  double energy_before = 0.0;
+  double energy_before = 0.0;     // kinetic
+  double potential_before = 0.0;  // of gravity
   double momentum_before_x = 0.0;
   double momentum_before_y = 0.0;
   double movable_mass = 0.0;

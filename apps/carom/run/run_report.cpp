@@ -10,6 +10,11 @@ double RunOutcome::energy_change() const {
   return energy_before > 0.0 ? (energy_after - energy_before) / energy_before : 0.0;
 }
 
+double RunOutcome::total_energy_change() const {
+  const double scale = energy_before > 0.0 ? energy_before : energy_after;
+  return scale > 0.0 ? (total_energy_after() - total_energy_before()) / scale : 0.0;
+}
+
 double RunOutcome::momentum_change() const {
   const double scale = std::sqrt(2.0 * movable_mass * energy_before);
   return scale > 0.0 ? length(momentum_after - momentum_before) / scale : 0.0;
@@ -71,8 +76,20 @@ std::string run_text(const RunOutcome& o) {
   text += "collisions/s    " + readable_count(o.collisions_per_second()) + "\n";
   text += "wall time       " + rounded(o.wall_seconds) + " s (setup " + rounded(o.setup_seconds) +
           " s)\n";
-  text += "energy          " + readable(o.energy_before) + " -> " + readable(o.energy_after) +
-          " (" + change + " " + rounded(o.energy_change()) + ")\n";
+  if (o.gravity) {
+    // Gravity trades kinetic for potential energy: their sum is what elastic contacts keep.
+    const std::string total_change = o.total_energy_conserved ? "drift" : "change";
+    text += "kinetic energy  " + readable(o.energy_before) + " -> " + readable(o.energy_after) +
+            " (change " + rounded(o.energy_change()) + ")\n";
+    text += "potential       " + readable(o.potential_before) + " -> " +
+            readable(o.potential_after) + "\n";
+    text += "total energy    " + readable(o.total_energy_before()) + " -> " +
+            readable(o.total_energy_after()) + " (" + total_change + " " +
+            rounded(o.total_energy_change()) + ")\n";
+  } else {
+    text += "energy          " + readable(o.energy_before) + " -> " + readable(o.energy_after) +
+            " (" + change + " " + rounded(o.energy_change()) + ")\n";
+  }
   text += "momentum        " + readable(o.momentum_before) + " -> " + readable(o.momentum_after) +
           " (" + change + " " + rounded(o.momentum_change()) + ")\n";
   if (o.frames > 0) text += "frames          " + std::to_string(o.frames) + "\n";
@@ -101,6 +118,12 @@ nlohmann::ordered_json run_json(const RunOutcome& o) {
   json["energy_after"] = o.energy_after;
   json["conservative"] = o.conservative;
   json["energy_change"] = o.energy_change();
+  json["potential_energy_before"] = o.potential_before;
+  json["potential_energy_after"] = o.potential_after;
+  json["total_energy_before"] = o.total_energy_before();
+  json["total_energy_after"] = o.total_energy_after();
+  json["total_energy_conserved"] = o.total_energy_conserved;
+  json["total_energy_change"] = o.total_energy_change();
   json["momentum_before"] = {o.momentum_before.x, o.momentum_before.y};
   json["momentum_after"] = {o.momentum_after.x, o.momentum_after.y};
   json["momentum_change"] = o.momentum_change();

@@ -23,20 +23,32 @@ struct RunOutcome {
   std::uint64_t frames = 0;
   double setup_seconds = 0.0;  // loading the scene and building the world
   double wall_seconds = 0.0;   // the run itself, writing outputs included
-  double energy_before = 0.0;
+  double energy_before = 0.0;  // kinetic
   double energy_after = 0.0;
+  // The potential energy of gravity (World::potential_energy); 0 without gravity.
+  double potential_before = 0.0;
+  double potential_after = 0.0;
+  bool gravity = false;  // whether the world has gravity (the text then shows every energy)
   Vec2 momentum_before;
   Vec2 momentum_after;
   double movable_mass = 0.0;  // at the start
   bool interrupted = false;
   // Why the run stopped short of what was asked (none: it did not).
   StopReason stopped = StopReason::none;
-  // Whether the scene conserves energy and momentum (every restitution 1, no pockets, no moving
-  // immovable ball): their changes are then numerical drift, otherwise physics.
+  // Whether the scene conserves kinetic energy and momentum (every restitution 1, no pockets, no
+  // moving immovable ball, no gravity): their changes are then numerical drift, otherwise physics.
   bool conservative = true;
+  // Whether it conserves the total energy: the same, gravity allowed.
+  bool total_energy_conserved = true;
 
   // (E_after - E_before) / E_before; 0 when E_before is 0.
   [[nodiscard]] double energy_change() const;
+  [[nodiscard]] double total_energy_before() const { return energy_before + potential_before; }
+  [[nodiscard]] double total_energy_after() const { return energy_after + potential_after; }
+  // (T_after - T_before) / E_before, the change of the total energy relative to the kinetic
+  // energy at the start (at the end when the balls start at rest), because the potential's zero
+  // is arbitrary; without gravity it equals energy_change().
+  [[nodiscard]] double total_energy_change() const;
   // |P_after - P_before| / sqrt(2·M·E_before): the change of momentum relative to the momentum
   // scale of the gas; 0 when E_before is 0.
   [[nodiscard]] double momentum_change() const;

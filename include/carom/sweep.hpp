@@ -105,7 +105,9 @@ struct Motion {
 // no normal speed and the acceleration presses them together (a ball at rest on a floor that
 // gravity pulls down is in contact now, at normal speed 0); the caller decides what such a
 // contact does (the world rests the ball on its support). A graze, touching within the rounding
-// and parting again, is no hit. Velocities at the contact are velocity + acceleration·t.
+// and parting again, is no hit; touching and parting so slowly that the acceleration brings the
+// two back before the gap has opened beyond its rounding is a hit where the gap turns to fall.
+// Velocities at the contact are velocity + acceleration·t.
 //
 // A zero acceleration (both, for two balls) gives exactly the answer of the straight-line query.
 // Magnitudes: any finite input is scaled by powers of two (lengths to about 1, then time so that

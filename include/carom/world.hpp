@@ -68,6 +68,13 @@ struct WorldDef {
   // "Gravity"). Immovable balls do not fall. Zero, the default, keeps balls on straight lines;
   // every result is then what it is without the field. Changed between steps by set_gravity.
   Vec2 gravity{};
+  // Under gravity, a contact whose bounce would lift a ball less than rest_height of its radius
+  // off a support that stands still (a wall, an immovable ball at rest, a resting ball) ends in
+  // contact instead: the ball then slides along the support, or rests on it, at no cost in events
+  // until something disturbs it (docs/world.md, "Resting and sliding"). > 0; a thousandth of a
+  // radius is below what any picture shows. Elastic contacts (restitution 1) bounce however low;
+  // only a ball touching a support with no speed to leave it rests.
+  double rest_height = 1e-3;
 };
 
 struct BallDef {
@@ -238,10 +245,11 @@ class World {
   [[nodiscard]] double mass(BallId id) const;
   [[nodiscard]] std::uint64_t user_data(BallId id) const;
   [[nodiscard]] std::size_t ball_count() const noexcept;
-  [[nodiscard]] double kinetic_energy() const noexcept;          // of movable balls
+  [[nodiscard]] double kinetic_energy() const noexcept;  // of movable balls
   // −Σ m·gravity·p over movable balls: the potential energy of gravity, zero at the origin (0
   // without gravity). kinetic_energy() + potential_energy() is the total that elastic contacts
-  // keep.
+  // keep. In a periodic cell p is the wrapped place, so the total jumps by m·|g·period| as a
+  // ball re-enters across the cell's side.
   [[nodiscard]] double potential_energy() const noexcept;
   [[nodiscard]] Vec2 momentum() const noexcept;                  // of movable balls
   [[nodiscard]] std::uint64_t collision_count() const noexcept;  // since creation, all kinds

@@ -209,11 +209,15 @@ GapClosings gap_closings(const GapPolynomial& polynomial, double horizon, AtStar
   bool open = start.sign > 0;
   const bool start_counts =
       at_start == AtStart::counts || (at_start == AtStart::touching && start.sign == 0);
+  // In contact at the start (touching or overlapping) and parting: a contact again where the gap
+  // turns to fall before it has opened beyond its rounding (two balls a rounding apart that part
+  // slower than gravity presses them together).
+  bool parting_contact = false;
   if (start.sign <= 0 && start_counts) {
     if (falls_at_start(p)) {
       record(0.0);
     } else {
-      open = start.sign == 0;  // touching and not falling: it may close later
+      parting_contact = true;
     }
   }
   // Clamped to the largest double: a bound that overflows says nothing, and bisection needs a
@@ -228,6 +232,14 @@ GapClosings gap_closings(const GapPolynomial& polynomial, double horizon, AtStar
   for (std::size_t k = 0; k <= turning.count; ++k) {
     const double x = k < turning.count ? turning.x[k] : end;
     const int sign = sample(p, x).sign;
+    if (parting_contact && k > 0 && sample(slope, 0.5 * (previous + x)).value < 0.0) {
+      record(previous);  // the turning point at which it starts to fall, still in contact
+      parting_contact = false;
+    }
+    if (parting_contact && sign > 0) {
+      parting_contact = false;
+      open = true;
+    }
     if (open && sign < 0) {
       record(previous_sign > 0 ? bracketed_root(p, slope, previous, x, 1) : previous);
       open = false;

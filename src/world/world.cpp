@@ -124,6 +124,7 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
     }
   }
   detail::require_finite(kFunction, "def.gravity", def.gravity);
+  detail::require_positive(kFunction, "def.rest_height", def.rest_height);
   impl_->def = def;
   impl_->gravity_on = def.gravity != Vec2{};
   impl_->periodic_cell = PeriodicCell(def.lower, def.upper);
@@ -177,6 +178,10 @@ BallId World::add_ball(const BallDef& def) {
     w.last_contact_times[slot] = -std::numeric_limits<double>::infinity();
   }
   info.user_data = def.user_data;
+  if (w.gravity_on) {
+    w.carriages.resize(w.balls.size());
+    w.carriages[slot] = w.free_carriage();
+  }
   ++b.version;
   w.largest_radius = std::max(w.largest_radius, def.radius);
   w.grid.insert(slot, w.grid.cell_of(position));
@@ -188,6 +193,11 @@ void World::remove_ball(BallId id) {
   Impl& w = *impl_;
   const std::uint32_t slot = w.slot_of("World::remove_ball", id);
   BallSlot& b = w.balls[slot];
+  if (w.gravity_on) {
+    // Whatever rested on it falls.
+    w.advance(slot, w.time);
+    w.disturb(slot);
+  }
   w.grid.erase(slot);
   w.species.release(b.species);
   b.species = detail::kNoSpecies;
@@ -415,6 +425,7 @@ void World::set_gravity(Vec2 gravity) {
   w.synchronize(w.time);
   w.def.gravity = gravity;
   w.gravity_on = gravity != Vec2{};
+  w.reset_carriages();  // resting and sliding balls fall, and settle again under the new gravity
   w.events_valid = false;
 }
 
@@ -422,6 +433,10 @@ void World::set_velocity(BallId id, Vec2 velocity) {
   constexpr const char* kFunction = "World::set_velocity";
   const std::uint32_t slot = impl_->slot_of(kFunction, id);
   detail::require_finite(kFunction, "velocity", velocity);
+  if (impl_->gravity_on) {
+    impl_->advance(slot, impl_->time);
+    impl_->disturb(slot);  // it no longer rests, and what rested on it falls
+  }
   BallSlot& b = impl_->balls[slot];
   b.position = impl_->position_at(slot, impl_->time);
   b.local_time = impl_->time;
@@ -517,6 +532,7 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   Impl& w = *impl_;
   const std::uint32_t slot = w.slot_of(kFunction, id);
   detail::require_finite(kFunction, "position", position);
+  if (w.gravity_on) w.advance(slot, w.time);  // (the velocity too, re-based to now)
   BallSlot& b = w.balls[slot];
   const Vec2 from = w.position_at(slot, w.time);
   Vec2 target = position;
@@ -557,6 +573,7 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
     refuse(kFunction, "position", detail::vector_text(position),
            "the ball cannot go there: " + overlap);
   }
+  if (w.gravity_on) w.disturb(slot);  // it no longer rests, and what rested on it falls
   w.grid.erase(slot);
   b.position = target;
   b.local_time = w.time;

@@ -11,6 +11,7 @@ enum class EventKind : std::uint8_t {
   ball_ball = 0,      // two balls touch
   ball_wall = 1,      // a ball touches a wall
   cell_crossing = 2,  // a ball's centre leaves its grid cell (bookkeeping, no contact)
+  release = 3,        // under gravity, a sliding ball leaves its support (world_resting.cpp)
 };
 
 // The four sides a ball's centre can leave its cell through (the partner of a crossing).

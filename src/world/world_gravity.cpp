@@ -76,6 +76,12 @@ void World::Impl::advance_under_gravity(std::uint32_t ball, double t) {
 }
 
 void World::Impl::predict_under_gravity(std::uint32_t ball) {
+  // A ball whose support no longer holds it falls (a safety net: whatever changes a carrier
+  // frees what it carried, disturb).
+  if (movable(ball) && carriages[ball].state != detail::Carried::free && !supports_hold(ball)) {
+    disturb(ball);
+    ++balls[ball].version;
+  }
   const BallSlot& b = balls[ball];
   const Vec2 p = b.position;  // at the world's time
   const Motion motion = motion_of(ball);
@@ -92,10 +98,49 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
                                      detail::kLeft, detail::kRight);
   const AxisExit along_y = axis_exit(p.y, v.y, a.y, grid.exit_y(cy, false), grid.exit_y(cy, true),
                                      detail::kDown, detail::kUp);
-  const AxisExit& exit = along_y.t < along_x.t ? along_y : along_x;
+  const AxisExit exit = along_y.t < along_x.t ? along_y : along_x;
   best.time = time + exit.t;
   best.kind = EventKind::cell_crossing;
   best.partner = exit.side;
+  // A ball carried by gravity on supports: they are touched, not met (docs/engine.md, "Resting
+  // and sliding"); a sliding ball leaves its support where its coordinate along the line passes
+  // an end.
+  const detail::Carriage* carried = nullptr;
+  if (movable(ball) && carriages[ball].state != detail::Carried::free) carried = &carriages[ball];
+  // Whether ball `other` rests or slides on the support `key`.
+  const auto carries = [&](std::uint32_t other, std::uint32_t key) {
+    if (!movable(other)) return false;
+    const detail::Carriage& c = carriages[other];
+    const auto end = c.support.begin() + c.supports;
+    return std::find(c.support.begin(), end, key) != end;
+  };
+  const auto supported_by = [&](std::uint32_t key) {
+    if (carried == nullptr) return false;
+    const auto end = carried->support.begin() + carried->supports;
+    return std::find(carried->support.begin(), end, key) != end;
+  };
+  if (carried != nullptr && carried->state == detail::Carried::sliding) {
+    // On a ball, in that ball's frame.
+    Vec2 offset = p - carried->origin;
+    Vec2 relative = v;
+    Vec2 relative_acceleration = a;
+    const std::uint32_t key = carried->support[0];
+    if ((key & detail::kBallSupport) != 0) {
+      const std::uint32_t carrier = slot_of_handle[key & ~detail::kBallSupport];
+      offset = minimum_image(p - position_at(carrier, time)) - carried->origin;
+      relative = v - velocity_at(carrier, time);
+      relative_acceleration = a - acceleration_of(carrier);
+    }
+    const Vec2 tangent = left_normal(carried->normal);
+    const AxisExit off =
+        axis_exit(dot(offset, tangent), dot(relative, tangent), dot(relative_acceleration, tangent),
+                  carried->lower, carried->upper, 0, 0);
+    if (off.t < exit.t) {
+      best.time = time + off.t;
+      best.kind = EventKind::release;
+      best.partner = 0;
+    }
+  }
   // Contacts after the ball leaves its cell are found again from the next one.
   const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
   const auto consider = [&](double t, EventKind kind, std::uint32_t partner,
@@ -112,6 +157,7 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const detail::Species& kind = species[b.species];
   const Ball shape{p, kind.radius};
   for (const std::uint32_t w : grid.walls(cell)) {
+    if (supported_by(w)) continue;
     const Impact impact = detail::time_of_impact(walls[w], shape, motion, horizon());
     if (impact.hit) consider(impact.t, EventKind::ball_wall, w, 0);
   }
@@ -122,6 +168,15 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const bool periodic = def.boundary == Boundary::periodic;
   const bool few_cells =
       periodic && (grid.nx() < kSingleImageMinCells || grid.ny() < kSingleImageMinCells);
+  // A contact at the world's time itself counts only where the response will act on it: the two
+  // approach, or gravity presses them together, along the normal the response takes (else the
+  // pair, left alone, would be predicted again at once, for ever).
+  const auto acts_now = [&](double t, Vec2 offset, Vec2 other_velocity, Vec2 other_acceleration) {
+    if (time + t != time || offset == Vec2{}) return true;
+    const Vec2 normal = normalized(-offset);
+    return detail::approaching(v, other_velocity, normal) ||
+           dot(a - other_acceleration, normal) > 0.0;
+  };
   const auto pair = [&](std::uint32_t other, Vec2 offset) {
     // offset: from the other ball's centre to this one's, at the world's time.
     const BallSlot& o = balls[other];
@@ -134,13 +189,17 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
       // A shared acceleration cancels in the difference: the straight-line quadratic.
       const detail::Crossing crossing =
           detail::entry_crossing(offset, v - other_velocity, reach, limit);
-      if (crossing.found) consider(crossing.t, EventKind::ball_ball, other, o.version);
+      if (crossing.found && acts_now(crossing.t, offset, other_velocity, other_acceleration)) {
+        consider(crossing.t, EventKind::ball_ball, other, o.version);
+      }
       return;
     }
     const Impact impact = detail::accelerated_ball_ball(
         Ball{offset, kind.radius}, motion, Ball{{}, other_kind.radius},
         Motion{other_velocity, other_acceleration}, limit);
-    if (impact.hit) consider(impact.t, EventKind::ball_ball, other, o.version);
+    if (impact.hit && acts_now(impact.t, offset, other_velocity, other_acceleration)) {
+      consider(impact.t, EventKind::ball_ball, other, o.version);
+    }
   };
   grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
     for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall;
@@ -148,6 +207,8 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == ball) continue;
       if (!movable_ball && !movable(other)) continue;  // nothing can respond
+      if (supported_by(handle_of[other] | detail::kBallSupport)) continue;
+      if (carries(other, handle_of[ball] | detail::kBallSupport)) continue;  // and the other way
       const Vec2 offset = p - position_at(other, time);
       if (!periodic) {
         pair(other, offset);

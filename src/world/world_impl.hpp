@@ -4,6 +4,7 @@
 // the public API with its validation in world.cpp. Design: docs/engine.md.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -18,6 +19,7 @@
 #include "carom/geometry.hpp"
 #include "carom/sweep.hpp"  // Motion
 #include "carom/world.hpp"
+#include "carriage.hpp"
 #include "core/accelerated_sweep.hpp"
 #include "event_queue.hpp"
 #include "grid.hpp"
@@ -105,6 +107,11 @@ struct World::Impl : detail::BallStore {
   // Whether def.gravity is not zero: only then do the parts for accelerated motion run, so that a
   // world without gravity takes exactly the paths it always took.
   bool gravity_on = false;
+  // By slot, how gravity carries each ball (carriage.hpp): sized with the slots while gravity is
+  // on, empty otherwise.
+  std::vector<detail::Carriage> carriages;
+  double jam_time = -std::numeric_limits<double>::infinity();  // (jammed)
+  std::uint32_t jam_count = 0;
 
   // ---- handles ----
   // The slot of the live ball `id` names; throws InvalidArgument (naming `function`) for a null
@@ -130,9 +137,10 @@ struct World::Impl : detail::BallStore {
       return b.velocity + acceleration_of(ball) * (t - b.local_time);
     return b.velocity;
   }
-  // The acceleration a ball moves with: gravity for a movable ball (docs/world.md, "Gravity").
+  // The acceleration a ball moves with: gravity for a movable ball, or its part along a support
+  // the ball slides on, or none for a ball at rest (docs/world.md, "Gravity").
   [[nodiscard]] Vec2 acceleration_of(std::uint32_t ball) const {
-    return gravity_on && movable(ball) ? def.gravity : Vec2{};
+    return gravity_on && movable(ball) ? carriages[ball].acceleration : Vec2{};
   }
   [[nodiscard]] Motion motion_of(std::uint32_t ball) const {
     return {balls[ball].velocity, acceleration_of(ball)};
@@ -180,6 +188,7 @@ struct World::Impl : detail::BallStore {
   // content is consistent.
   void load_payload(detail::ByteReader& in, std::uint32_t version);
   void load_grid(detail::ByteReader& in);
+  void load_carriage(detail::ByteReader& in, std::uint32_t slot, const std::string& which);
 
   // ---- the grid's upkeep (world_grid_upkeep.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,
@@ -208,8 +217,43 @@ struct World::Impl : detail::BallStore {
   void repredict_changed(std::uint32_t ball);
   void predict(std::uint32_t ball);
   // predict for a world with gravity (world_gravity.cpp): every pair and wall by the accelerated
-  // queries, the cell's exit by a quadratic.
+  // queries, the cell's exit by a quadratic, leaving a support by a quadratic.
   void predict_under_gravity(std::uint32_t ball);
+
+  // ---- resting and sliding under gravity (world_resting.cpp; docs/engine.md, "Resting and
+  // sliding") ----
+  // A free ball's carriage under the current gravity.
+  [[nodiscard]] detail::Carriage free_carriage() const;
+  // Every ball free (gravity turned on or changed), or no carriages at all (turned off).
+  void reset_carriages();
+  // The normal speed below which a contact of this ball with a support ends in contact rather
+  // than a bounce: √(2·|g|·rest_height·radius), the speed that lifts it rest_height radii.
+  [[nodiscard]] double rest_speed(std::uint32_t ball) const;
+  // Whether a ball can carry others: it stands still (immovable and still, or resting).
+  [[nodiscard]] bool can_carry(std::uint32_t ball) const;
+  // A ball whose course something changed: free, and every ball it carried freed too (their
+  // predictions renewed), recursively.
+  void disturb(std::uint32_t ball);
+  // disturb's second half: frees the balls a ball carried (and those they carried).
+  void wake_carried(std::uint32_t ball);
+  // A ball whose normal velocity towards a static support (`support`, at unit `normal` from its
+  // centre) is gone: sliding on it, or resting on it and the support it already had.
+  void settle(std::uint32_t ball, std::uint32_t support, Vec2 normal,
+              const detail::Carriage& before);
+  // A ball sliding on a support that gravity presses against a free ball: pushes it along (both
+  // then move with the contact forces that keep the three touching), where those forces push.
+  bool push_along(std::uint32_t slider, std::uint32_t pushed, Vec2 normal);
+  // Two balls pressed together that neither can carry: both rest, each on the other (and on its
+  // own support); false, changing nothing, where `only_slow` and either is faster than its rest
+  // speed.
+  bool hold_each_other(std::uint32_t i, std::uint32_t j, bool only_slow);
+  // Whether every support a carried ball lists can still carry it.
+  [[nodiscard]] bool supports_hold(std::uint32_t ball) const;
+  // Counts a contact without approach at t; true once there have been too many at one instant.
+  bool jammed(double t);
+  bool process_under_gravity(const detail::Event& event);
+  bool resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, double t);
+  bool resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall, double t);
   // predict for a contact's two balls, i's slot set first (world_prediction.cpp).
   void predict_both(std::uint32_t i, std::uint32_t j);
   // predict's two parts (prediction_steps.hpp): the cell's exit and walls, then the balls around.
@@ -295,9 +339,19 @@ struct World::Impl : detail::BallStore {
   // at the cells the crossing brings into reach where its last prediction found no contact
   // around it (clear_behind; docs/engine.md, "Crossing a cell").
   void cross_cell(std::uint32_t ball, std::uint32_t side, double t, bool clear_behind);
-  [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const;
-  // Whether a ball collided less than def.collapse_time before t (always false when it is 0).
-  [[nodiscard]] bool collided_recently(std::uint32_t ball, double t) const;
+  // The restitution a pair bounces with at t: the smaller of theirs, or 1 for a ball that
+  // collided recently (below).
+  [[nodiscard]] double pair_restitution(std::uint32_t i, std::uint32_t j, double t) const {
+    if (collided_recently(i, t) || collided_recently(j, t)) return 1.0;
+    if (!mixed_restitution) return def.restitution;
+    return std::min(species_of(i).restitution, species_of(j).restitution);
+  }
+  // Whether a ball collided less than def.collapse_time before t (always false when it is 0):
+  // inelastic collapse prevention (the TC model; docs/engine.md, "Response"), under which such
+  // a ball bounces elastically.
+  [[nodiscard]] bool collided_recently(std::uint32_t ball, double t) const {
+    return def.collapse_time > 0.0 && last_contact_times[ball] > t - def.collapse_time;
+  }
 };
 
 }  // namespace carom

@@ -92,11 +92,6 @@ void World::Impl::predict(std::uint32_t ball) {
 // independent, and so the processor overlaps their chains of loads and arithmetic
 // (docs/decisions/0009-pair-kernel-avx2.md).
 void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
-  if (gravity_on) [[unlikely]] {
-    predict_under_gravity(i);
-    predict_under_gravity(j);
-    return;
-  }
   Event best_i;
   Event best_j;
   detail::SlotQuery query_i;

@@ -44,6 +44,8 @@ CAROM_ALWAYS_INLINE inline Vec2 unit_along(Vec2 d) {
 }  // namespace
 
 bool World::Impl::process(const Event& event) {
+  if (gravity_on) [[unlikely]]
+    return process_under_gravity(event);
   const std::uint32_t i = event.owner;
   switch (event.kind) {
     case EventKind::ball_ball: {
@@ -60,21 +62,10 @@ bool World::Impl::process(const Event& event) {
     case EventKind::cell_crossing:
       cross_cell(i, event.partner, event.time, event.partner_version == detail::kClearBehind);
       return false;
+    case EventKind::release:  // (under gravity only)
+      return false;
   }
   return false;
-}
-
-// Inelastic collapse prevention (the TC model; docs/engine.md, "Response"): a ball that collided
-// less than collapse_time before t bounces elastically.
-CAROM_ALWAYS_INLINE inline bool World::Impl::collided_recently(std::uint32_t ball, double t) const {
-  return def.collapse_time > 0.0 && last_contact_times[ball] > t - def.collapse_time;
-}
-
-CAROM_ALWAYS_INLINE inline double World::Impl::pair_restitution(std::uint32_t i, std::uint32_t j,
-                                                                double t) const {
-  if (collided_recently(i, t) || collided_recently(j, t)) return 1.0;
-  if (!mixed_restitution) return def.restitution;
-  return std::min(species_of(i).restitution, species_of(j).restitution);
 }
 
 bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) {
@@ -133,19 +124,14 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
   // The contact's own normal where the query confirms it (touching and approaching now), else
   // the direction to the nearest point (the ball a rounding short of the wall).
   const Ball shape{a.position, radius_of(i)};
-  // (Under gravity the contact is confirmed for the ball's parabola, with its own query.)
-  const Motion motion{a.velocity, gravity_on ? acceleration_of(i) : Vec2{}};
-  Impact now = gravity_on ? detail::time_of_impact(walls[wall], shape, motion, 0.0)
-                          : detail::time_of_impact(walls[wall], shape, a.velocity, 0.0);
+  Impact now = detail::time_of_impact(walls[wall], shape, a.velocity, 0.0);
   if (!now.hit) {
     // A contact a sliver ahead that the motion cannot reach: a gap below the rounding of the
     // position closes at a time at which the ball is still where it is now, so advancing it
     // changes nothing and the same contact would come up again and again, a sliver later each
     // time (a ball filling an arc's circle, at its centre, met its end point so). It is a
     // contact now.
-    const Impact ahead = gravity_on
-                             ? detail::time_of_impact(walls[wall], shape, motion, kFarFuture)
-                             : detail::time_of_impact(walls[wall], shape, a.velocity, kFarFuture);
+    const Impact ahead = detail::time_of_impact(walls[wall], shape, a.velocity, kFarFuture);
     if (ahead.hit && ahead.a_at == a.position) now = ahead;
   }
   const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);

@@ -28,8 +28,9 @@ namespace {
 constexpr char kMagic[8] = {'C', 'A', 'R', 'O', 'M', 'W', 'L', 'D'};
 // 2: the grid's hysteresis (docs/world.md, "Saving and resuming"). A version-1 save is refused:
 // it was written by an engine whose run this build would not continue bit for bit anyway.
-// 3: version 2 with gravity after the cell size; written only for a world with gravity, so that a
-// world without it saves exactly the bytes it always did.
+// 3: version 2 with gravity and the rest height after the cell size, and each slot's carriage
+// (resting and sliding); written only for a world with gravity, so that a world without it saves
+// exactly the bytes it always did.
 constexpr std::uint32_t kVersion = 2;
 constexpr std::uint32_t kGravityVersion = 3;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
@@ -122,7 +123,10 @@ std::string World::Impl::save_payload() const {
   out.f64(def.restitution);
   out.f64(def.collapse_time);
   out.f64(def.cell_size);
-  if (gravity_on) out.vec2(def.gravity);
+  if (gravity_on) {
+    out.vec2(def.gravity);
+    out.f64(def.rest_height);
+  }
 
   out.f64(time);
   out.u64(collisions);
@@ -166,6 +170,18 @@ std::string World::Impl::save_payload() const {
     out.u64(info.user_data);
     out.u32(info.generation);
     if (def.collapse_time > 0.0) out.f64(last_contact_times[i]);
+    if (gravity_on) {
+      const detail::Carriage& c = carriages[i];
+      out.u8(static_cast<std::uint8_t>(c.state));
+      out.u8(c.supports);
+      out.u32(c.support[0]);
+      out.u32(c.support[1]);
+      out.vec2(c.acceleration);
+      out.vec2(c.normal);
+      out.vec2(c.origin);
+      out.f64(c.lower);
+      out.f64(c.upper);
+    }
   }
   out.u32(static_cast<std::uint32_t>(free_handles.size()));
   for (const std::uint32_t slot : free_handles) out.u32(slot);
@@ -242,6 +258,10 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
     def.gravity = in.vec2("def.gravity");
     if (!finite(def.gravity) || def.gravity == Vec2{}) {
       in.inconsistent("def.gravity", vector_text(def.gravity), "must be finite and not zero");
+    }
+    def.rest_height = in.f64("def.rest_height");
+    if (!(def.rest_height > 0.0 && std::isfinite(def.rest_height))) {
+      in.inconsistent("def.rest_height", number_text(def.rest_height), "must be finite, > 0");
     }
     gravity_on = true;
   }
@@ -324,6 +344,7 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
     slot_of_handle[i] = i;
   }
   if (tc) last_contact_times.resize(slots);
+  if (gravity_on) carriages.resize(slots);
   double largest_alive = 0.0;
   for (std::uint32_t i = 0; i < slots; ++i) {
     detail::BallSlot& b = balls[i];
@@ -341,6 +362,7 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
     info.generation = in.u32("ball generation");
     if (tc) last_contact_times[i] = in.f64("ball last contact time");
     const std::string which = "ball slot " + std::to_string(i);
+    if (gravity_on) load_carriage(in, i, which);
     if (info.generation == 0) in.inconsistent(which, "generation 0", "0 is the null handle's");
     if (!alive) continue;
     ++live_count;
@@ -390,9 +412,11 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
       const std::uint8_t kind = in.u8("event kind");
       event.partner = in.u32("event partner");
       event.partner_version = in.u32("event partner version");
-      const std::uint32_t partners = kind == 0 ? slots : (kind == 1 ? wall_count : 4);
-      if (kind > 2 || event.partner >= partners || (kind == 0 && event.partner == i) ||
-          std::isnan(event.time) || event.time == -std::numeric_limits<double>::infinity()) {
+      const std::uint32_t partners =
+          kind == 0 ? slots : (kind == 1 ? wall_count : (kind == 2 ? 4 : 1));
+      if (kind > (gravity_on ? 3 : 2) || event.partner >= partners ||
+          (kind == 0 && event.partner == i) || std::isnan(event.time) ||
+          event.time == -std::numeric_limits<double>::infinity()) {
         in.inconsistent("event of ball slot " + std::to_string(i), number_text(event.time),
                         "kind, partner or time out of range");
       }
@@ -402,6 +426,40 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
   }
   if (in.remaining() != 0) {
     in.inconsistent("payload", std::to_string(in.remaining()) + " bytes", "left over at the end");
+  }
+}
+
+// A slot's carriage (version 3), checked for what it names: walls that exist, handles within the
+// slots, finite values. (That a support touches its ball is physics: audit() tells.)
+void World::Impl::load_carriage(ByteReader& in, std::uint32_t slot, const std::string& which) {
+  detail::Carriage& c = carriages[slot];
+  const std::uint8_t state = in.u8("ball carriage state");
+  c.supports = in.u8("ball carriage supports");
+  c.support[0] = in.u32("ball carriage support");
+  c.support[1] = in.u32("ball carriage support");
+  c.acceleration = in.vec2("ball carriage acceleration");
+  c.normal = in.vec2("ball carriage normal");
+  c.origin = in.vec2("ball carriage origin");
+  c.lower = in.f64("ball carriage lower");
+  c.upper = in.f64("ball carriage upper");
+  c.state = static_cast<detail::Carried>(state);
+  const auto names_something = [&](std::uint32_t key) {
+    if ((key & detail::kBallSupport) != 0) {
+      return (key & ~detail::kBallSupport) < carriages.size() &&
+             (key & ~detail::kBallSupport) != slot;
+    }
+    return key < walls.size();
+  };
+  const bool supports_valid = c.supports <= 2 &&
+                              (c.supports < 1 || names_something(c.support[0])) &&
+                              (c.supports < 2 || names_something(c.support[1]));
+  const bool state_valid = state <= static_cast<std::uint8_t>(detail::Carried::resting) &&
+                           (state == 0) == (c.supports == 0);
+  if (!supports_valid || !state_valid || !finite(c.acceleration) || !finite(c.normal) ||
+      !finite(c.origin) || std::isnan(c.lower) || std::isnan(c.upper)) {
+    in.inconsistent(which, "carriage state " + std::to_string(state),
+                    "a carriage is free, sliding or resting, on walls and balls that exist, with "
+                    "finite values");
   }
 }
 

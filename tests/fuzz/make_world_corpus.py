@@ -3,7 +3,7 @@
 encoded as world_fuzz.cpp decodes its input (kept in step with it by hand). Each seed is a short
 program worth mutating from: a gas in each boundary, walls of every kind (a point, a zero-span arc,
 a full circle), drags to the nearest free place, inelastic balls with a stop condition, a save and
-load, and invalid calls. Run it from anywhere; it rewrites the folder."""
+load, invalid calls, and worlds under gravity. Run it from anywhere; it rewrites its seeds."""
 import pathlib
 import struct
 
@@ -25,8 +25,9 @@ def velocity(speed_index, angle_fraction, axis=False):
     return bytes([speed_index]) + word(angle_fraction) + bytes([0 if axis else 1])
 
 
-def head(boundary, restitution_index=0, fixed_cell=False):
-    return bytes([boundary + 3 * restitution_index + (0x80 if fixed_cell else 0)])
+def head(boundary, restitution_index=0, fixed_cell=False, gravity=False):
+    return bytes([boundary + 3 * restitution_index + (18 if gravity else 0) +
+                  (0x80 if fixed_cell else 0)])
 
 
 def walls(*encoded):
@@ -88,15 +89,22 @@ SEEDS = {
     "bad_calls_and_removal": head(OPEN) + walls() + gas(4) + bad(0, b"\x02") + bad(1) + bad(2) + bad(3)
     + bad(4, b"\x01") + bytes([REMOVE, 1]) + bad(5, b"\x00") + gas(2) + bytes([VELOCITY, 0]) + velocity(4, 0.5)
     + step(2),
+    # Under gravity: a pile settling in a box (balls resting on each other, woken by a removal and
+    # a thrown ball), slopes and a bowl, and an elastic gas in a periodic cell.
+    "gravity_pile_in_box": head(BOX, 3, gravity=True) + walls() + gas(18, 1) + step(6) + step(7)
+    + bytes([SAVE]) + bytes([REMOVE, 2]) + step(4) + add(10, 18, 4, 0.75) + step(7),
+    "gravity_slopes_and_bowl": head(BOX, 4, gravity=True)
+    + walls(segment((1, 12), (12, 6)), segment((19, 9), (8, 3)), arc((10, 8), 5.0, 0.5, 5) + word(0.5))
+    + gas(10, 1) + step(6) + bytes([STOP, 1]) + step(7) + bytes([SAVE]) + step(7),
+    "gravity_elastic_periodic": head(PERIODIC, 0, gravity=True) + gas(12, 2) + collisions(8)
+    + bytes([SAVE]) + step(4),
 }
 
 
 def main():
     folder = pathlib.Path(__file__).resolve().parent / "corpus" / "world"
     folder.mkdir(parents=True, exist_ok=True)
-    for old in folder.iterdir():
-        old.unlink()
-    for name, data in SEEDS.items():
+    for name, data in SEEDS.items():  # (other files there are crashes kept as regressions)
         (folder / name).write_bytes(data)
 
 

@@ -7,12 +7,14 @@
 //   knows to be invalid was passed, or when a placement overlaps (then the world is unchanged);
 // - World::audit finds no overlap and no ball outside the box; every number is finite;
 // - time never goes back, contacts lie in the call's time range in the documented order;
-// - elastic worlds keep their kinetic energy and inelastic ones never gain any (to rounding);
+// - elastic worlds keep their energy (kinetic, plus potential under gravity) and inelastic ones
+//   never gain any (to rounding);
 // - a loaded world saves to the same bytes and, given the next call, agrees bit for bit with
 //   the world it was saved from.
 //
 // Input bytes, read front to back (missing bytes read as 0, so every input is valid):
-//   byte 0: boundary (open, box, periodic) and the world's restitution;
+//   byte 0: boundary (open, box, periodic), the world's restitution and gravity (none, or down
+//   at 9.81 with balls resting and sliding);
 //   then up to kMaxWalls walls (non-periodic worlds), then up to kMaxCalls calls, one opcode
 //   byte each followed by its arguments. Counts, sizes and speeds are bounded so that one input
 //   runs in milliseconds; the call that brings the world's contacts to kMaxContacts is stopped
@@ -175,11 +177,12 @@ class Harness {
     // Inelastic balls could collapse (infinitely many contacts in finite time) without the TC
     // model, and a run would never end; the world offers collapse_time for exactly that.
     if (def_.restitution < 1.0) def_.collapse_time = 1e-2;
+    if ((choice / 18) % 2 == 1) def_.gravity = {0.0, -9.81};
     if ((head & 0x80) != 0) def_.cell_size = 4.0;  // a fixed grid as well as the chosen one
     world_.emplace(def_);
     install_stop_condition(*world_, 0);
-    CAROM_TRACE("World(boundary %d, restitution %g, cell_size %g)\n",
-                static_cast<int>(def_.boundary), def_.restitution, def_.cell_size);
+    CAROM_TRACE("World(boundary %d, restitution %g, cell_size %g, gravity %g)\n",
+                static_cast<int>(def_.boundary), def_.restitution, def_.cell_size, def_.gravity.y);
     elastic_ = def_.restitution == 1.0;
   }
 
@@ -567,7 +570,7 @@ class Harness {
     check(snapshot(world()) == before, "a refused call changed the world");
   }
 
-  void reset_energy() { energy_ = world().kinetic_energy(); }
+  void reset_energy() { energy_ = world().kinetic_energy() + world().potential_energy(); }
 
   void check_invariants() {
     World& w = world();
@@ -583,11 +586,14 @@ class Harness {
               "a ball outside the periodic cell");
       }
     }
-    const double energy = w.kinetic_energy();
-    check(std::isfinite(energy), "the kinetic energy is not finite");
-    const double allowed = kEnergyTolerance * std::max(energy_, 1e-300);
-    if (driven_) {
-      // Nothing to check: the immovable ball's motion is a source of energy.
+    // Under gravity the total, whose rounding is that of its larger parts.
+    const double energy = w.kinetic_energy() + w.potential_energy();
+    check(std::isfinite(energy), "the energy is not finite");
+    const double scale = w.kinetic_energy() + std::abs(w.potential_energy());
+    const double allowed = kEnergyTolerance * std::max({scale, std::abs(energy_), 1e-300});
+    if (driven_ || (def_.boundary == Boundary::periodic && def_.gravity != Vec2{})) {
+      // Nothing to check: the immovable ball's motion is a source of energy; a periodic cell's
+      // potential energy is taken of wrapped places, and jumps when a ball re-enters.
     } else if (elastic_) {
       check(std::abs(energy - energy_) <= allowed, "an elastic world changed its energy");
     } else {

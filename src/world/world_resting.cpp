@@ -1,0 +1,578 @@
+// Resting and sliding under gravity (docs/engine.md, "Resting and sliding"). An inelastic ball on
+// a floor would bounce infinitely often in finite time, and a pile would do the same among its
+// balls: a contact whose bounce would lift the ball less than the rest height off a support that
+// stands still ends in contact instead. The ball then slides along the support with gravity's
+// part along it (a segment exactly; a curved support along its tangent, until the gap has opened
+// by the rest height, when it falls back onto it), or rests where its supports hold gravity up.
+// Only kinetic energy along the normal is taken, never given. A resting ball costs no events
+// until something disturbs it; then every ball it carried is freed too.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "carom/geometry.hpp"
+#include "core/bowl_bounce.hpp"
+#include "core/impulse.hpp"
+#include "engine_tuning.hpp"
+#include "world_impl.hpp"
+
+namespace carom {
+
+using detail::BallSlot;
+using detail::Carriage;
+using detail::Carried;
+using detail::Event;
+using detail::EventKind;
+using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the engine's constants
+
+namespace {
+
+// Gravity's part along a support below this fraction of gravity is none: the ball stands (a
+// floor at an angle of 2^-40 rad would take longer than the age of the universe to slide a
+// radius off under Earth's gravity).
+constexpr double kLevel = 0x1p-40;
+// An elastic contact rests a ball only when it leaves its support slower than this fraction of
+// the rest speed: the rounding of a touch, never a bounce.
+constexpr double kElasticRest = 0x1p-26;
+// Slow contacts (below the rest speed) at one instant beyond which the balls pressed together
+// rest as a jam. A settling pile hands a press on through a few balls at once; this many is a
+// cycle. (A fast impact handed on through a pile is no jam: its contacts are not counted.)
+constexpr std::uint32_t kJamContacts = 256;
+
+Vec2 without_part_along(Vec2 v, Vec2 unit) { return v - unit * dot(v, unit); }
+
+}  // namespace
+
+detail::Carriage World::Impl::free_carriage() const {
+  Carriage carriage;
+  carriage.acceleration = def.gravity;
+  return carriage;
+}
+
+void World::Impl::reset_carriages() {
+  if (!gravity_on) {
+    carriages.clear();
+    carriages.shrink_to_fit();
+    return;
+  }
+  carriages.assign(balls.size(), free_carriage());
+}
+
+double World::Impl::rest_speed(std::uint32_t ball) const {
+  return std::sqrt(2.0 * length(def.gravity) * def.rest_height * radius_of(ball));
+}
+
+bool World::Impl::can_carry(std::uint32_t ball) const {
+  return balls[ball].velocity == Vec2{} &&
+         (!movable(ball) || carriages[ball].state == Carried::resting);
+}
+
+void World::Impl::disturb(std::uint32_t ball) {
+  if (movable(ball)) carriages[ball] = free_carriage();
+  wake_carried(ball);
+}
+
+void World::Impl::wake_carried(std::uint32_t ball) {
+  // The balls it carried (resting or sliding on it, pushed along by it, or pushing it) are freed
+  // in turn, and those they carried: each is among its carrier's neighbours.
+  std::vector<std::uint32_t> carriers{ball};
+  while (!carriers.empty()) {
+    const std::uint32_t carrier = carriers.back();
+    carriers.pop_back();
+    const std::uint32_t key = handle_of[carrier] | detail::kBallSupport;
+    grid.for_each_neighbour(grid.cell_of_ball(carrier), [&](std::int32_t cell) {
+      for (std::int32_t j = grid.first_ball(cell); j != detail::kNoBall;
+           j = grid.next_ball(static_cast<std::uint32_t>(j))) {
+        const auto other = static_cast<std::uint32_t>(j);
+        if (other == carrier || !movable(other)) continue;
+        Carriage& carriage = carriages[other];
+        const auto end = carriage.support.begin() + carriage.supports;
+        if (std::find(carriage.support.begin(), end, key) == end) continue;
+        carriers.push_back(other);
+        advance(other, time);
+        carriage = free_carriage();
+        ++balls[other].version;
+        predict(other);
+      }
+    });
+  }
+}
+
+void World::Impl::settle(std::uint32_t ball, std::uint32_t support, Vec2 normal,
+                         const Carriage& before) {
+  wake_carried(ball);  // its course changes: what it carried, or pushed, falls free
+  BallSlot& b = balls[ball];
+  Carriage& carriage = carriages[ball];
+  const Vec2 g = def.gravity;
+  const double radius = radius_of(ball);
+  const double slow = rest_speed(ball);
+  // A support's slot (a ball) and its velocity (a wall's is zero).
+  const auto slot_of_support = [&](std::uint32_t key) {
+    return slot_of_handle[key & ~detail::kBallSupport];
+  };
+  const auto support_velocity = [&](std::uint32_t key) {
+    return (key & detail::kBallSupport) != 0 ? balls[slot_of_support(key)].velocity : Vec2{};
+  };
+  const auto rest_on = [&](std::uint32_t first, std::uint32_t second, std::uint8_t count) {
+    carriage = Carriage{};
+    carriage.state = Carried::resting;
+    carriage.support = {first, second};
+    carriage.supports = count;
+    b.velocity = {};
+  };
+
+  // The support it slid on before, where it still touches it: the two may hold it together.
+  std::uint32_t other_support = support;
+  Vec2 other_normal;
+  if (before.state == Carried::sliding && before.support[0] != support) {
+    const std::uint32_t key = before.support[0];
+    Vec2 toward;
+    double gap = 0.0;
+    if ((key & detail::kBallSupport) != 0) {
+      const std::uint32_t slot = slot_of_support(key);
+      toward = minimum_image(position_at(slot, time) - b.position);
+      gap = length(toward) - radius - radius_of(slot);
+    } else {
+      toward = detail::nearest_point(walls[key], b.position) - b.position;
+      gap = length(toward) - radius;
+    }
+    if (gap <= 2.0 * def.rest_height * radius && toward != Vec2{}) {
+      other_support = key;
+      other_normal = normalized(toward);
+    }
+  }
+  if (other_support != support) {
+    const bool both_still =
+        support_velocity(support) == Vec2{} && support_velocity(other_support) == Vec2{};
+    const Vec2 along_new = without_part_along(g, normal);
+    const Vec2 along_old = without_part_along(g, other_normal);
+    const bool leaving_old = dot(b.velocity - support_velocity(other_support), other_normal) < 0.0;
+    if (!leaving_old && support_velocity(other_support) == Vec2{}) {
+      // Pinned between the two: it slides on one whose slope leads away from the other, and
+      // rests where each slope leads into the other (gravity then lies between the normals).
+      // (A support that moves is let go: the new one carries the ball, and the two balls meet
+      // as two.)
+      if (dot(along_new, other_normal) > 0.0) {
+        if (dot(along_old, normal) > 0.0 && both_still) {
+          rest_on(other_support, support, 2);
+          return;
+        }
+        const Vec2 carried_by = support_velocity(other_support);
+        b.velocity = carried_by + without_part_along(b.velocity - carried_by, other_normal);
+        std::swap(support, other_support);
+        std::swap(normal, other_normal);
+      }
+    }
+  }
+
+  // One support: where gravity has no part along it and the ball is slow beside the support, it
+  // rests (on a support that stands still) or rides along with it (one that moves).
+  const Vec2 along = without_part_along(g, normal);
+  const Vec2 carried_by = support_velocity(support);
+  const bool level = length(along) <= kLevel * length(g);
+  if (level && length(b.velocity - carried_by) <= slow) {
+    if (carried_by == Vec2{}) {
+      rest_on(support, 0, 1);
+      return;
+    }
+    b.velocity = carried_by;
+  }
+  carriage = Carriage{};
+  carriage.state = Carried::sliding;
+  carriage.acceleration = level ? Vec2{} : along;
+  carriage.normal = normal;
+  carriage.support = {support, 0};
+  carriage.supports = 1;
+  const Vec2 tangent = left_normal(normal);
+  if ((support & detail::kBallSupport) != 0) {
+    // Along the tangent of a ball, in that ball's frame: the offset from its centre.
+    const std::uint32_t slot = slot_of_support(support);
+    carriage.origin = minimum_image(b.position - position_at(slot, time));
+  } else {
+    carriage.origin = b.position;
+    const detail::Wall& wall = walls[support];
+    if (!wall.is_arc) {
+      // A segment's interior: it slides along the line until its foot passes an end. (A foot
+      // within a curved slide's reach of an end is taken at the end, a point: else a ball at a
+      // segment's very end would slide a rounding, fall, land and slide again, for ever.)
+      const double at_a = dot(wall.segment.a - b.position, tangent);
+      const double at_b = dot(wall.segment.b - b.position, tangent);
+      const double rise = def.rest_height * radius;
+      const double near_end = std::sqrt(rise * (2.0 * radius + rise));
+      if (std::min(std::abs(at_a), std::abs(at_b)) > near_end) {
+        carriage.lower = std::min(at_a, at_b);
+        carriage.upper = std::max(at_a, at_b);
+        return;
+      }
+    }
+  }
+  // A curved support (a ball, a point, an arc's outside) of curvature radius R at the centre:
+  // along its tangent the gap opens as √(R² + x²) − R, reaching the rest height δ at
+  // x = ±√(2Rδ + δ²).
+  double reach = radius;
+  if ((support & detail::kBallSupport) != 0) {
+    reach += radius_of(slot_of_support(support));
+  } else if (walls[support].is_arc) {
+    const double from_center = length(b.position - walls[support].frame.center);
+    if (from_center > walls[support].frame.radius) reach = from_center;
+  }
+  const double rise = def.rest_height * radius;
+  const double half_width = std::sqrt(rise * (2.0 * reach + rise));
+  carriage.lower = -half_width;
+  carriage.upper = half_width;
+}
+
+bool World::Impl::push_along(std::uint32_t slider, std::uint32_t pushed, Vec2 normal) {
+  if (!movable(slider) || !movable(pushed)) return false;
+  Carriage& s = carriages[slider];
+  Carriage& f = carriages[pushed];
+  if (s.state != Carried::sliding || s.supports != 1 || f.state != Carried::free) return false;
+  const std::uint32_t key = s.support[0];
+  if ((key & detail::kBallSupport) != 0 &&
+      !can_carry(slot_of_handle[key & ~detail::kBallSupport])) {
+    return false;
+  }
+  // The contact forces λs (from the support, along −ns) and λ (between the two, along −n on
+  // the slider and +n on the pushed ball) that keep the slider on its support and the two
+  // touching: a_s = g − (λs·ns + λ·n)/m_s, a_f = g + λ·n/m_f, with a_s·ns = 0 and
+  // (a_s − a_f)·n = 0. Both must push (≥ 0), else the two part of themselves.
+  const Vec2 g = def.gravity;
+  const Vec2 ns = s.normal;
+  const double c = dot(ns, normal);
+  const double inverse_s = species_of(slider).inverse_mass;
+  const double inverse_f = species_of(pushed).inverse_mass;
+  const double denominator = (c * c - 1.0) * inverse_s - inverse_f;
+  if (!(denominator < 0.0)) return false;
+  const double lambda = c * dot(g, ns) / denominator;
+  const double lambda_s = dot(g, ns) / inverse_s - lambda * c;
+  if (!(lambda > 0.0) || !(lambda_s >= 0.0) || !std::isfinite(lambda)) return false;
+  wake_carried(slider);  // its course changes
+  s.acceleration = g - (ns * lambda_s + normal * lambda) * inverse_s;
+  s.acceleration -= ns * dot(s.acceleration, ns);  // (exactly along the support)
+  s.support[1] = handle_of[pushed] | detail::kBallSupport;
+  s.supports = 2;
+  // The pushed ball slides along the slider's tangent, in the slider's frame, until the gap
+  // opens by the rest height.
+  f = Carriage{};
+  f.state = Carried::sliding;
+  f.acceleration = g + normal * (lambda * inverse_f);
+  f.normal = -normal;
+  f.origin = minimum_image(balls[pushed].position - balls[slider].position);
+  f.support = {handle_of[slider] | detail::kBallSupport, 0};
+  f.supports = 1;
+  const double rise = def.rest_height * radius_of(pushed);
+  const double reach = radius_of(slider) + radius_of(pushed);
+  f.upper = std::sqrt(rise * (2.0 * reach + rise));
+  f.lower = -f.upper;
+  return true;
+}
+
+bool World::Impl::hold_each_other(std::uint32_t i, std::uint32_t j, bool only_slow) {
+  // A jam of pressing balls (one pushed by a second into a wall or a third) rests as it stands,
+  // each on the other and on what it stood on. Only kinetic energy is taken.
+  for (const std::uint32_t ball : {i, j}) {
+    if (only_slow && movable(ball) && length(balls[ball].velocity) > rest_speed(ball)) {
+      return false;
+    }
+  }
+  // A ball at rest already stays as it is (the other rests on it); one that moved stops, and
+  // what it carried falls free.
+  const bool still_i = can_carry(i);
+  const bool still_j = can_carry(j);
+  if (!still_i) wake_carried(i);
+  if (!still_j) wake_carried(j);
+  for (const auto& [ball, other] : {std::pair{i, j}, std::pair{j, i}}) {
+    if (!movable(ball) || (ball == i ? still_i : still_j)) continue;
+    Carriage& carriage = carriages[ball];
+    const std::uint32_t leaning_on = handle_of[other] | detail::kBallSupport;
+    // What it stood on, where that still stands (a wall, or a ball that can carry).
+    std::uint32_t standing_on = leaning_on;
+    if (carriage.state != Carried::free && carriage.support[0] != leaning_on) {
+      const std::uint32_t key = carriage.support[0];
+      if ((key & detail::kBallSupport) == 0 ||
+          can_carry(slot_of_handle[key & ~detail::kBallSupport])) {
+        standing_on = key;
+      }
+    }
+    carriage = Carriage{};
+    carriage.state = Carried::resting;
+    carriage.support = {leaning_on, standing_on};
+    carriage.supports = standing_on == leaning_on ? 1 : 2;
+    balls[ball].velocity = {};
+  }
+  return true;
+}
+
+bool World::Impl::supports_hold(std::uint32_t ball) const {
+  const Carriage& carriage = carriages[ball];
+  const std::uint32_t me = handle_of[ball] | detail::kBallSupport;
+  const auto lists = [&](std::uint32_t other, std::uint32_t key) {
+    const Carriage& c = carriages[other];
+    const auto end = c.support.begin() + c.supports;
+    return std::find(c.support.begin(), end, key) != end;
+  };
+  // A resting ball's supports all; a sliding ball's first (its second is a ball it pushes).
+  const std::uint8_t count = carriage.state == Carried::resting ? carriage.supports : 1;
+  for (std::uint8_t k = 0; k < count; ++k) {
+    const std::uint32_t key = carriage.support[k];
+    if ((key & detail::kBallSupport) == 0) continue;  // walls stay
+    const std::uint32_t other = slot_of_handle[key & ~detail::kBallSupport];
+    if (!balls[other].alive()) return false;
+    if (can_carry(other)) continue;
+    // Two balls holding each other up, or a ball pushed along by a slider.
+    if (movable(other) && carriages[other].state != Carried::free && lists(other, me)) continue;
+    return false;
+  }
+  return true;
+}
+
+bool World::Impl::jammed(double t) {
+  if (t != jam_time) {
+    jam_time = t;
+    jam_count = 0;
+  }
+  return ++jam_count > kJamContacts;
+}
+
+bool World::Impl::process_under_gravity(const Event& event) {
+  const std::uint32_t i = event.owner;
+  switch (event.kind) {
+    case EventKind::ball_ball: {
+      const std::uint32_t j = event.partner;
+      if (!balls[j].alive() || balls[j].version != event.partner_version) {
+        advance(i, event.time);
+        predict(i);
+        return false;
+      }
+      return resolve_pair_under_gravity(i, j, event.time);
+    }
+    case EventKind::ball_wall:
+      return resolve_wall_under_gravity(i, event.partner, event.time);
+    case EventKind::cell_crossing:
+      cross_cell(i, event.partner, event.time, false);
+      return false;
+    case EventKind::release:
+      // A sliding ball past its support's end (or off a curved support's tangent): it falls.
+      advance(i, event.time);
+      disturb(i);
+      ++balls[i].version;
+      predict(i);
+      return false;
+  }
+  return false;
+}
+
+bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall, double t) {
+  advance(i, t);
+  BallSlot& a = balls[i];
+  const Ball shape{a.position, radius_of(i)};
+  const Motion motion = motion_of(i);
+  Impact now = detail::time_of_impact(walls[wall], shape, motion, 0.0);
+  if (!now.hit) {
+    // A contact a sliver ahead that the motion cannot reach (resolve_ball_wall says why).
+    const Impact ahead = detail::time_of_impact(walls[wall], shape, motion, kFarFuture);
+    if (ahead.hit && ahead.a_at == a.position) now = ahead;
+  }
+  const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
+  const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
+  const double approach = dot(a.velocity, normal);
+  const bool in_bowl = detail::inside_arc(walls[wall], a.position);
+  const bool movable_ball = movable(i);
+  const Carriage before = movable_ball ? carriages[i] : Carriage{};
+  const double restitution = collided_recently(i, t) ? 1.0 : restitution_of(i);
+  bool resolved = false;
+  if (approach > 0.0 || (in_bowl && now.hit)) {
+    double speed_change = 0.0;
+    if (in_bowl) {
+      const detail::BowlBounce bounce = detail::bounce_inside_arc(a.velocity, normal, restitution);
+      a.velocity = bounce.velocity;
+      speed_change = bounce.normal_speed_change;
+    } else {
+      speed_change = detail::wall_speed_change(approach, restitution);
+      a.velocity -= normal * speed_change;
+    }
+    resolved = speed_change > 0.0;
+    if (resolved) {
+      if (def.collapse_time > 0.0) last_contact_times[i] = t;
+      ContactEvent contact;
+      contact.time = t;
+      contact.kind = ContactKind::ball_wall;
+      contact.a = id_of(i);
+      contact.wall = wall;
+      contact.point = point;
+      contact.normal = normal;
+      contact.approach_speed = approach;
+      contact.impulse = movable_ball ? speed_change * species_of(i).mass : 0.0;
+      record(contact);
+    }
+  }
+  if (movable_ball && now.hit && approach <= rest_speed(i) && jammed(t)) {
+    // (A jam against a wall, as in resolve_pair_under_gravity.)
+    wake_carried(i);
+    carriages[i] = Carriage{};
+    carriages[i].state = Carried::resting;
+    carriages[i].support = {wall, 0};
+    carriages[i].supports = 1;
+    a.velocity = {};
+    ++a.version;
+    predict(i);
+    return false;
+  }
+  if (movable_ball && (resolved || now.hit)) {
+    // What is left of the normal speed, leaving the wall; a support bears the ball where gravity
+    // presses it in.
+    const double leaving = -dot(a.velocity, normal);
+    const double slow = rest_speed(i) * (restitution < 1.0 ? 1.0 : kElasticRest);
+    // (Or where its own acceleration does: a ball sliding down a slope into an upright wall, or
+    // pushed into it by another.)
+    const bool bears = dot(def.gravity, normal) > 0.0 || dot(before.acceleration, normal) > 0.0;
+    if (bears && leaving <= slow) {
+      if (!in_bowl) {
+        a.velocity = without_part_along(a.velocity, normal);
+        settle(i, wall, normal, before);
+      } else if (length(without_part_along(def.gravity, normal)) <= kLevel * length(def.gravity) &&
+                 length(a.velocity) <= rest_speed(i)) {
+        // At the bottom of a bowl, slow: at rest there.
+        wake_carried(i);
+        carriages[i] = Carriage{};
+        carriages[i].state = Carried::resting;
+        carriages[i].support = {wall, 0};
+        carriages[i].supports = 1;
+        a.velocity = {};
+      } else {
+        disturb(i);
+      }
+    } else {
+      disturb(i);
+    }
+    ++a.version;
+  }
+  predict(i);
+  return resolved;
+}
+
+bool World::Impl::resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, double t) {
+  advance(i, t);
+  advance(j, t);
+  BallSlot& a = balls[i];
+  BallSlot& b = balls[j];
+  const Vec2 between = minimum_image(b.position - a.position);
+  const Vec2 normal = between == Vec2{} ? normalized(a.velocity - b.velocity) : normalized(between);
+  // (An approach within the rounding of the velocities is none: an impulse that small changes
+  // nothing, and the pair would meet again at once, for ever.)
+  const double approach = detail::approaching(a.velocity, b.velocity, normal)
+                              ? dot(a.velocity - b.velocity, normal)
+                              : 0.0;
+  const bool pressing = dot(acceleration_of(i) - acceleration_of(j), normal) > 0.0;
+  if (!(approach > 0.0) && !pressing) {
+    // A graze, or a rounding past the touch.
+    predict_under_gravity(i);
+    predict_under_gravity(j);
+    return false;
+  }
+  if (approach <= std::min(rest_speed(i), rest_speed(j)) && jammed(t)) {
+    // Slow contacts that keep handing a press on at one instant: a jam of several balls (the
+    // engine solves no chains of contact forces). It rests as it stands.
+    hold_each_other(i, j, false);
+    ++a.version;
+    ++b.version;
+    predict_under_gravity(i);
+    predict_under_gravity(j);
+    return false;
+  }
+  const double restitution = pair_restitution(i, j, t);
+  const Carriage before_i = movable(i) ? carriages[i] : Carriage{};
+  const Carriage before_j = movable(j) ? carriages[j] : Carriage{};
+
+  // A ball pressed onto a slow carried ball with no acceleration of its own (on a level floor):
+  // that ball comes to rest first, so that it can bear the other.
+  const auto stand_still = [&](std::uint32_t ball) {
+    if (!movable(ball) || carriages[ball].state != Carried::sliding) return;
+    if (carriages[ball].acceleration != Vec2{} || length(balls[ball].velocity) > rest_speed(ball))
+      return;
+    wake_carried(ball);
+    carriages[ball].state = Carried::resting;
+    balls[ball].velocity = {};
+    ++balls[ball].version;
+  };
+  if (pressing) {
+    // Gravity presses the upper ball onto the lower.
+    const double downward = dot(def.gravity, normal);  // > 0: i is above j
+    if (downward > 0.0) stand_still(j);
+    if (downward < 0.0) stand_still(i);
+  }
+
+  // A movable ball pressed by gravity onto one that can carry it (moving without acceleration):
+  // the carrier, standing on its own supports, answers as a wall would; a bounce too low to
+  // leave ends in contact.
+  for (const bool first : {true, false}) {
+    const std::uint32_t mover = first ? i : j;
+    const std::uint32_t still = first ? j : i;
+    const Vec2 toward = first ? normal : -normal;
+    if (!movable(mover) || can_carry(mover) || !can_carry(still)) continue;
+    if (!(dot(def.gravity, toward) > 0.0)) continue;
+    BallSlot& m = balls[mover];
+    const Vec2 carried_by = balls[still].velocity;
+    const double closing = dot(m.velocity - carried_by, toward);
+    const double speed = std::max(0.0, closing);
+    const double slow = rest_speed(mover) * (restitution < 1.0 ? 1.0 : kElasticRest);
+    if (restitution * speed > slow) break;
+    // Taking the normal speed in the carrier's frame takes kinetic energy when the carrier stands
+    // still; when it moves, only where it does (else the two bounce as two balls).
+    const Vec2 kept = m.velocity - toward * closing;
+    if (length_squared(kept) > length_squared(m.velocity) * (1.0 + 0x1p-40)) break;
+    if (speed > 0.0) {
+      if (def.collapse_time > 0.0) last_contact_times[mover] = t;
+      if (contact_wanted()) {
+        const double impulse = speed * species_of(mover).mass;
+        record_ball_ball(i, j, t, between, normal, approach, impulse);
+      }
+    }
+    m.velocity = kept;
+    settle(mover, handle_of[still] | detail::kBallSupport, toward, first ? before_i : before_j);
+    ++a.version;
+    ++b.version;
+    predict_under_gravity(i);
+    predict_under_gravity(j);
+    return speed > 0.0;
+  }
+
+  bool resolved = false;
+  if (!(approach > 0.0)) {
+    // Pressed together with no approach, and neither can carry the other (each accelerates): two
+    // slow balls hold each other up; else a ball sliding on a support pushes a free one along;
+    // else the two stop where they stand, a jam that rests until disturbed (the engine solves no
+    // chains of contact forces; docs/engine.md, "Resting and sliding").
+    if (!hold_each_other(i, j, true) && !push_along(i, j, normal) && !push_along(j, i, -normal)) {
+      hold_each_other(i, j, false);
+    }
+  } else {
+    double e = restitution;
+    // Below the rest speed two balls part no more (inelastic collapse of a row along a floor
+    // would otherwise bounce them infinitely often).
+    if (e < 1.0 && e * approach <= std::min(rest_speed(i), rest_speed(j))) e = 0.0;
+    const double inverse_a = species_of(i).inverse_mass;
+    const double inverse_b = species_of(j).inverse_mass;
+    const double impulse = detail::normal_impulse(approach, inverse_a, inverse_b, e);
+    detail::apply_impulse(a.velocity, b.velocity, normal, impulse, inverse_a, inverse_b);
+    if (def.collapse_time > 0.0) {
+      last_contact_times[i] = t;
+      last_contact_times[j] = t;
+    }
+    if (contact_wanted()) record_ball_ball(i, j, t, between, normal, approach, impulse);
+    resolved = true;
+    if (inverse_a == 0.0 ? a.velocity != Vec2{} : (inverse_b == 0.0 && b.velocity != Vec2{})) {
+      mover_met = true;
+    }
+    if (inverse_a != 0.0) disturb(i);
+    if (inverse_b != 0.0) disturb(j);
+  }
+  ++a.version;
+  ++b.version;
+  predict_under_gravity(i);
+  predict_under_gravity(j);
+  return resolved;
+}
+
+}  // namespace carom

@@ -6,12 +6,14 @@
 // is reached at the root of a quadratic. Apart from the straight-line parts, so that a world
 // without gravity runs exactly as it did.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
 #include "core/accelerated_sweep.hpp"
 #include "core/circle_crossing.hpp"
 #include "engine_tuning.hpp"
+#include "pair_batch.hpp"
 #include "world_impl.hpp"
 
 namespace carom {
@@ -177,6 +179,31 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
     return detail::approaching(v, other_velocity, normal) ||
            dot(a - other_acceleration, normal) > 0.0;
   };
+  detail::PairBatch& batch = pair_batch;
+  batch.count = 0;
+  // The batch's answers: hits (times from now), and pairs outside the exact range, solved again
+  // by the scalar rescaled path.
+  const auto take = [&](std::size_t k, double t) {
+    const std::uint32_t other = batch.other[k];
+    const Vec2 offset{batch.sx[k], batch.sy[k]};
+    if (acts_now(t, offset, velocity_at(other, time), a)) {
+      consider(t, EventKind::ball_ball, other, balls[other].version);
+    }
+  };
+  const auto solve_batch = [&] {
+    batch.solve(kFarFuture);
+    for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(hits));
+      take(k, batch.t[k]);
+    }
+    for (std::uint32_t rescales = batch.rescales; rescales != 0; rescales &= rescales - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(rescales));
+      const detail::Crossing crossing = detail::entry_crossing_rescaled(
+          {{batch.sx[k], batch.sy[k]}, {batch.ux[k], batch.uy[k]}, batch.reach[k]}, kFarFuture);
+      if (crossing.found) take(k, crossing.t);
+    }
+    batch.count = 0;
+  };
   const auto pair = [&](std::uint32_t other, Vec2 offset) {
     // offset: from the other ball's centre to this one's, at the world's time.
     const BallSlot& o = balls[other];
@@ -186,12 +213,10 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
     const double reach = kind.radius + other_kind.radius;
     const double limit = horizon();
     if (other_acceleration == a) {
-      // A shared acceleration cancels in the difference: the straight-line quadratic.
-      const detail::Crossing crossing =
-          detail::entry_crossing(offset, v - other_velocity, reach, limit);
-      if (crossing.found && acts_now(crossing.t, offset, other_velocity, other_acceleration)) {
-        consider(crossing.t, EventKind::ball_ball, other, o.version);
-      }
+      // A shared acceleration cancels in the difference: the straight-line quadratic, solved in
+      // batches by the pair kernel (the same arithmetic as entry_crossing).
+      batch.push(offset, v - other_velocity, reach, other);
+      if (batch.full()) solve_batch();
       return;
     }
     const Impact impact = detail::accelerated_ball_ball(
@@ -224,6 +249,7 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
       }
     }
   });
+  solve_batch();
   // (A crossing is never marked clear behind: cross_cell predicts a ball under gravity whole.)
   queue.set(ball, best);
 }

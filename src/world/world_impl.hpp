@@ -127,8 +127,14 @@ struct World::Impl : detail::BallStore {
   // A ball's place and velocity at t (at or after its local time): on its straight line, or
   // under gravity on its parabola.
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
-    if (gravity_on) [[unlikely]]
-      return detail::position_at(balls[ball].position, motion_of(ball), t - balls[ball].local_time);
+    if (gravity_on) [[unlikely]] {
+      const detail::BallSlot& b = balls[ball];
+      const double dt = t - b.local_time;
+      const Vec2 a = acceleration_of(ball);
+      // (The core's position_at is the same sum, with care where it overflows.)
+      const Vec2 at = b.position + b.velocity * dt + (a * (0.5 * dt)) * dt;
+      return is_finite(at) ? at : detail::position_at(b.position, {b.velocity, a}, dt);
+    }
     return balls[ball].position_at(t);
   }
   [[nodiscard]] Vec2 velocity_at(std::uint32_t ball, double t) const {

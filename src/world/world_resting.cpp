@@ -69,7 +69,12 @@ bool World::Impl::can_carry(std::uint32_t ball) const {
 }
 
 void World::Impl::disturb(std::uint32_t ball) {
-  if (movable(ball)) carriages[ball] = free_carriage();
+  if (movable(ball)) {
+    // A free ball carries nothing (a ball that carries or pushes another is resting or
+    // sliding), so the look at its neighbours is spared: most contacts are of free balls.
+    if (carriages[ball].state == Carried::free) return;
+    carriages[ball] = free_carriage();
+  }
   wake_carried(ball);
 }
 

@@ -4,8 +4,9 @@
 // stands still ends in contact instead. The ball then slides along the support with gravity's
 // part along it (a segment exactly; a curved support along its tangent, until the gap has opened
 // by the rest height, when it falls back onto it), or rests where its supports hold gravity up.
-// Only kinetic energy along the normal is taken, never given. A resting ball costs no events
-// until something disturbs it; then every ball it carried is freed too.
+// Kinetic energy is taken (the normal speed; all of it in a jam of pressing balls), never given.
+// A resting ball costs no events until something disturbs it; then every ball it carried is
+// freed too.
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -112,12 +113,9 @@ void World::Impl::settle(std::uint32_t ball, std::uint32_t support, Vec2 normal,
   const Vec2 g = def.gravity;
   const double radius = radius_of(ball);
   const double slow = rest_speed(ball);
-  // A support's slot (a ball) and its velocity (a wall's is zero).
+  // (Supports stand still: walls, and balls that can_carry.)
   const auto slot_of_support = [&](std::uint32_t key) {
     return slot_of_handle[key & ~detail::kBallSupport];
-  };
-  const auto support_velocity = [&](std::uint32_t key) {
-    return (key & detail::kBallSupport) != 0 ? balls[slot_of_support(key)].velocity : Vec2{};
   };
   const auto rest_on = [&](std::uint32_t first, std::uint32_t second, std::uint8_t count) {
     carriage = Carriage{};
@@ -147,41 +145,27 @@ void World::Impl::settle(std::uint32_t ball, std::uint32_t support, Vec2 normal,
       other_normal = normalized(toward);
     }
   }
-  if (other_support != support) {
-    const bool both_still =
-        support_velocity(support) == Vec2{} && support_velocity(other_support) == Vec2{};
-    const Vec2 along_new = without_part_along(g, normal);
-    const Vec2 along_old = without_part_along(g, other_normal);
-    const bool leaving_old = dot(b.velocity - support_velocity(other_support), other_normal) < 0.0;
-    if (!leaving_old && support_velocity(other_support) == Vec2{}) {
-      // Pinned between the two: it slides on one whose slope leads away from the other, and
-      // rests where each slope leads into the other (gravity then lies between the normals).
-      // (A support that moves is let go: the new one carries the ball, and the two balls meet
-      // as two.)
-      if (dot(along_new, other_normal) > 0.0) {
-        if (dot(along_old, normal) > 0.0 && both_still) {
-          rest_on(other_support, support, 2);
-          return;
-        }
-        const Vec2 carried_by = support_velocity(other_support);
-        b.velocity = carried_by + without_part_along(b.velocity - carried_by, other_normal);
-        std::swap(support, other_support);
-        std::swap(normal, other_normal);
+  if (other_support != support && dot(b.velocity, other_normal) >= 0.0) {
+    // Pinned between the two (not moving off the old one): it slides on one whose slope leads
+    // away from the other, and rests where each slope leads into the other (gravity then lies
+    // between the normals).
+    if (dot(without_part_along(g, normal), other_normal) > 0.0) {
+      if (dot(without_part_along(g, other_normal), normal) > 0.0) {
+        rest_on(other_support, support, 2);
+        return;
       }
+      b.velocity = without_part_along(b.velocity, other_normal);
+      std::swap(support, other_support);
+      std::swap(normal, other_normal);
     }
   }
 
-  // One support: where gravity has no part along it and the ball is slow beside the support, it
-  // rests (on a support that stands still) or rides along with it (one that moves).
+  // One support: where gravity has no part along it and the ball is slow, it rests.
   const Vec2 along = without_part_along(g, normal);
-  const Vec2 carried_by = support_velocity(support);
   const bool level = length(along) <= kLevel * length(g);
-  if (level && length(b.velocity - carried_by) <= slow) {
-    if (carried_by == Vec2{}) {
-      rest_on(support, 0, 1);
-      return;
-    }
-    b.velocity = carried_by;
+  if (level && length(b.velocity) <= slow) {
+    rest_on(support, 0, 1);
+    return;
   }
   carriage = Carriage{};
   carriage.state = Carried::sliding;

@@ -32,7 +32,7 @@ WorldDef box_under_gravity(Vec2 upper, double restitution) {
   return def;
 }
 
-double total_energy(const World& world) {
+double resting_total_energy(const World& world) {
   return world.kinetic_energy() + world.potential_energy();
 }
 
@@ -52,11 +52,11 @@ World poured_box(int n, double restitution, std::uint32_t seed) {
 // Runs `world` for `duration` in steps of 0.05, failing if the total energy ever rises by more
 // than the rounding of a sum of its terms (10⁻¹² of the largest) or an audit fails.
 void run_never_gaining(World& world, double duration) {
-  double before = total_energy(world);
+  double before = resting_total_energy(world);
   const double scale = std::abs(before) + world.kinetic_energy() + 1.0;
   for (double t = 0.0; t < duration; t += 0.05) {
     world.step(0.05);
-    const double now = total_energy(world);
+    const double now = resting_total_energy(world);
     ASSERT_LE(now, before + 1e-12 * scale) << "at t = " << world.time();
     ASSERT_FALSE(world.audit()) << *world.audit() << " at t = " << world.time();
     before = now;

@@ -17,6 +17,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // (counted in their bit patterns once it spans orders of magnitude) to one unit in 64 + 11
 // steps; Newton's steps, taken only where they shrink the bracket, need far fewer.
 constexpr int kMostSteps = 160;
+// Roundings of overlap within which a gap that starts to part still counts as in contact.
+constexpr double kNearTouch = 0x1p10;
 
 struct Poly {
   std::array<double, 5> c{};
@@ -104,7 +106,16 @@ double midpoint(double lo, double hi) {
 // guide there is) to one unit of the double, or to a point where the value is exactly zero.
 // Returns that point, or the final bracket's end of sign `first` (lo).
 double bracketed_root(const Poly& p, const Poly& slope, double lo, double hi, int first) {
+  // The first point a Newton step from lo where it lands inside (a gap that falls steadily is
+  // near its tangent there), else the midpoint: bisecting from 0 by bit patterns first visits
+  // the tiny times, dozens of steps below a root near 1.
   double x = midpoint(lo, hi);
+  const Sample lo_sample = sample(p, lo);
+  const Sample lo_slope = sample(slope, lo);
+  if (lo_slope.value != 0.0) {
+    const double newton = lo - newton_step(lo_sample, lo_slope, lo);
+    if (newton > lo && newton < hi) x = newton;
+  }
   double previous_width = kInfinity;
   for (int step = 0; step < kMostSteps; ++step) {
     const Sample at = sample(p, x);
@@ -209,15 +220,16 @@ GapClosings gap_closings(const GapPolynomial& polynomial, double horizon, AtStar
   bool open = start.sign > 0;
   const bool start_counts =
       at_start == AtStart::counts || (at_start == AtStart::touching && start.sign == 0);
-  // In contact at the start (touching or overlapping) and parting: a contact again where the gap
-  // turns to fall before it has opened beyond its rounding (two balls a rounding apart that part
-  // slower than gravity presses them together).
+  // In contact at the start (touching, or overlapping by a few roundings) and parting: a contact
+  // again where the gap turns to fall before it has opened beyond its rounding (two balls a
+  // rounding apart that part slower than gravity presses them together). A deeper overlap that
+  // parts is left to part, as the straight-line queries leave it.
   bool parting_contact = false;
   if (start.sign <= 0 && start_counts) {
     if (falls_at_start(p)) {
       record(0.0);
     } else {
-      parting_contact = true;
+      parting_contact = start.value >= -kNearTouch * start.bound;
     }
   }
   // Clamped to the largest double: a bound that overflows says nothing, and bisection needs a

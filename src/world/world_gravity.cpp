@@ -219,6 +219,11 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
       if (batch.full()) solve_batch();
       return;
     }
+    // Out of reach within the horizon (the gap can close by at most |u|·h + ½|a|·h²): no quartic
+    // to isolate. Most pairs of a ball among pegs are so.
+    const double travel =
+        limit * (length(v - other_velocity) + 0.5 * length(a - other_acceleration) * limit);
+    if (length(offset) - reach > 1.0000001 * travel) return;
     const Impact impact = detail::accelerated_ball_ball(
         Ball{offset, kind.radius}, motion, Ball{{}, other_kind.radius},
         Motion{other_velocity, other_acceleration}, limit);

@@ -4,9 +4,9 @@
 #include "gap_polynomial.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace carom::detail {
@@ -88,14 +88,27 @@ struct Points {
   }
 };
 
+// A double's bit pattern and back: memcpy rather than std::bit_cast, which the libc++ of
+// Debian's emscripten 3.1.6 (the wasm preset) does not have; the two compile to the same move.
+std::uint64_t bits_of(double x) {
+  std::uint64_t out = 0;
+  std::memcpy(&out, &x, sizeof out);
+  return out;
+}
+double double_of(std::uint64_t bits) {
+  double out = 0.0;
+  std::memcpy(&out, &bits, sizeof out);
+  return out;
+}
+
 // The midpoint of lo < hi for bisection: the mean of their bit patterns where they lie orders of
 // magnitude apart (so that a bracket from 0 to 10^300 narrows to the root's magnitude in a few
 // dozen steps), the arithmetic mean otherwise.
 double midpoint(double lo, double hi) {
   if (hi > 4.0 * lo && hi != kInfinity) {
-    const auto a = std::bit_cast<std::uint64_t>(lo);
-    const auto b = std::bit_cast<std::uint64_t>(hi);
-    return std::bit_cast<double>(a + (b - a) / 2);
+    const std::uint64_t a = bits_of(lo);
+    const std::uint64_t b = bits_of(hi);
+    return double_of(a + (b - a) / 2);
   }
   return lo + (hi - lo) * 0.5;
 }

@@ -317,7 +317,8 @@ bool World::Impl::supports_hold(std::uint32_t ball) const {
 }
 
 bool World::Impl::jammed(double t) {
-  if (t != jam_time) {
+  // (One instant to a few roundings of the clock: a cycle of contacts may creep by an ulp.)
+  if (!(std::abs(t - jam_time) <= 0x1p-44 * std::abs(t))) {
     jam_time = t;
     jam_count = 0;
   }
@@ -359,9 +360,10 @@ bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall
   const Motion motion = motion_of(i);
   Impact now = detail::time_of_impact(walls[wall], shape, motion, 0.0);
   if (!now.hit) {
-    // A contact a sliver ahead that the motion cannot reach (resolve_ball_wall says why).
+    // A contact a sliver ahead that the motion cannot reach (resolve_ball_wall says why), or
+    // that the world's clock cannot (a time below its rounding: the event came up now).
     const Impact ahead = detail::time_of_impact(walls[wall], shape, motion, kFarFuture);
-    if (ahead.hit && ahead.a_at == a.position) now = ahead;
+    if (ahead.hit && (ahead.a_at == a.position || t + ahead.t == t)) now = ahead;
   }
   const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
   const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);

@@ -73,9 +73,9 @@ SceneUnits read_units(const ObjectFields& fields) {
 WorldDef read_settings(const ObjectFields& fields) {
   WorldDef settings;
   if (!fields.has("world")) return settings;
-  const ObjectFields w(
-      fields.source(), fields.at("world"), fields.path_of("world"),
-      {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size", "gravity"});
+  const ObjectFields w(fields.source(), fields.at("world"), fields.path_of("world"),
+                       {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size",
+                        "gravity", "rest_height"});
   const std::string boundary = w.optional_string("boundary").value_or("open");
   if (boundary == "open") {
     settings.boundary = Boundary::open;
@@ -106,6 +106,7 @@ WorldDef read_settings(const ObjectFields& fields) {
   settings.collapse_time = non_negative(w, "collapse_time", 0.0);
   settings.cell_size = non_negative(w, "cell_size", 0.0);
   settings.gravity = w.optional_vector("gravity").value_or(Vec2{});
+  settings.rest_height = positive(w, "rest_height", WorldDef{}.rest_height);
   return settings;
 }
 

@@ -168,6 +168,8 @@ Scene capture_scene(const SceneWorld& sw) {
   scene.time = sw.time();
   // set_gravity may have changed it since the world was built.
   scene.world.gravity = sw.world.def().gravity;
+  // The world's own settings are what it ran with, whatever the scene it came from said.
+  scene.world.rest_height = sw.world.def().rest_height;
   for (std::size_t i = 0; i < sw.balls.size(); ++i) {
     const BallId id = sw.balls[i];
     if (id.is_null() || !sw.world.contains(id)) continue;

@@ -139,6 +139,8 @@ std::string to_json_text(const Scene& scene) {
       .add("cell_size", num(w.cell_size));
   // Only when set, so that a scene without gravity writes the same bytes as a file without the key.
   if (any_bit_set(w.gravity)) world.add("gravity", vec(w.gravity));
+  // Only when not the world's default, so that a scene that leaves it out writes no key either.
+  if (w.rest_height != WorldDef{}.rest_height) world.add("rest_height", num(w.rest_height));
   out += ",\n  \"world\": " + world.done();
   out += ",\n  \"time\": " + num(scene.time);
   write_array(out, "balls", scene.balls, ball_line);

@@ -29,12 +29,17 @@ refused = {
     "gravity with one number": {"world": {"gravity": [1]}},
     "gravity as a word": {"world": {"gravity": "down"}},
     "gravity with a string for a number": {"world": {"gravity": [0, "-inf"]}},
+    "rest height 0": {"world": {"rest_height": 0}},
+    "rest height below 0": {"world": {"rest_height": -0.01}},
+    "rest height as a word": {"world": {"rest_height": "low"}},
     "generator with radius and packing fraction": {
         "generators": [{"count": 3, "radius": 1, "packing_fraction": 0.1}]},
 }
-# And a scene with gravity that carom reads is valid under it.
+# And a scene with gravity and a rest height that carom reads is valid under it.
 if not validator.is_valid({"world": {"boundary": "open", "gravity": [0, -9.81]}}):
     failures.append("the schema refuses a scene with gravity that carom reads")
+if not validator.is_valid({"world": {"gravity": [0, -9.81], "rest_height": 0.01}}):
+    failures.append("the schema refuses a scene with a rest height that carom reads")
 
 for name, scene in refused.items():
     if validator.is_valid(scene):

@@ -169,6 +169,49 @@ TEST(SceneErrors, MisspeltGravityIsSuggested) {
   EXPECT_EQ(error_of("{\"world\": {\"restitutoin\": 1}}").suggestion, "restitution");
 }
 
+TEST(SceneErrors, RestHeightMustBeAFiniteNumberAboveZero) {
+  const auto zero = error_of("{\"world\": {\"boundary\": \"open\",\n  \"rest_height\": 0}}");
+  EXPECT_EQ(zero.file, "test.json");
+  EXPECT_EQ(zero.line, 2U);
+  EXPECT_EQ(zero.column, 18U);  // the value
+  EXPECT_EQ(zero.path, "world.rest_height");
+  EXPECT_EQ(zero.value, "0");
+  EXPECT_EQ(zero.problem, "must be > 0");
+  EXPECT_EQ(message_of("{\"world\": {\"boundary\": \"open\",\n  \"rest_height\": 0}}"),
+            "test.json:2:18: world.rest_height = 0: must be > 0");
+  const auto negative = error_of("{\"world\": {\"rest_height\": -1e-3}}");
+  EXPECT_EQ(negative.value, "-1e-3");
+  EXPECT_EQ(negative.problem, "must be > 0");
+  EXPECT_EQ(error_of("{\"world\": {\"rest_height\": -0.0}}").problem, "must be > 0");
+
+  const auto word = error_of("{\"world\": {\"rest_height\": \"low\"}}");
+  EXPECT_EQ(word.path, "world.rest_height");
+  EXPECT_EQ(word.value, "\"low\"");
+  EXPECT_EQ(word.problem, "must be a number, not a string (JSON numbers have no NaN or infinity)");
+  EXPECT_THAT(error_of("{\"world\": {\"rest_height\": [0.001]}}").problem,
+              HasSubstr("not an array"));
+  EXPECT_EQ(error_of("{\"world\": {\"rest_height\": null}}").path, "world.rest_height");
+
+  // Beyond a double it would read as infinity.
+  const auto huge = error_of("{\"world\": {\"rest_height\": 1e999}}");
+  EXPECT_EQ(huge.path, "world.rest_height");
+  EXPECT_EQ(huge.value, "1e999");
+  EXPECT_THAT(huge.problem, HasSubstr("beyond the range of a double"));
+  EXPECT_EQ(error_of("{\"world\": {\"rest_height\": \"inf\"}}").path, "world.rest_height");
+}
+
+TEST(SceneErrors, MisspeltRestHeightIsSuggested) {
+  const auto d = error_of("{\"world\": {\"boundary\": \"open\", \"rest_hieght\": 0.01}}");
+  EXPECT_EQ(d.path, "world.rest_hieght");
+  EXPECT_EQ(d.problem, "unknown key");
+  EXPECT_EQ(d.suggestion, "rest_height");
+  EXPECT_EQ(error_of("{\"world\": {\"restheight\": 0.01}}").suggestion, "rest_height");
+  EXPECT_EQ(error_of("{\"world\": {\"rest_hight\": 0.01}}").suggestion, "rest_height");
+  // Its neighbours among the world keys are still suggested for their own misspellings.
+  EXPECT_EQ(error_of("{\"world\": {\"restitutoin\": 1}}").suggestion, "restitution");
+  EXPECT_EQ(error_of("{\"world\": {\"gravty\": [0, -1]}}").suggestion, "gravity");
+}
+
 TEST(SceneErrors, OverlappingBallsNameBothAndTheOverlap) {
   const std::string message = message_of(
       "{\"balls\": [{\"name\": \"cue\", \"position\": [0, 0], \"radius\": 1},\n"

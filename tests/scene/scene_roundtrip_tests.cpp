@@ -163,8 +163,51 @@ TEST(SceneRoundTrip, GravityIsWrittenLastInTheWorldLine) {
   EXPECT_EQ(parse_scene("{}").world.gravity, Vec2{});
 }
 
-// A scene without gravity (or with gravity +0) writes no gravity key, so its text is that of the
-// same scene with the field left out, and saved scenes and the reference hashes' inputs stay put.
+TEST(SceneRoundTrip, RestHeightReadsBackBitIdentical) {
+  std::mt19937_64 random(20261202);
+  std::vector<double> values{0.01,
+                             0.1 + 0.2,
+                             1e-3 * (1.0 + 1e-15),
+                             std::nextafter(1e-3, 0.0),
+                             std::numeric_limits<double>::denorm_min(),
+                             std::numeric_limits<double>::max()};
+  for (int i = 0; i < 50; ++i) values.push_back(std::fabs(random_double(random)));
+  for (const double rest_height : values) {
+    if (!(rest_height > 0.0)) continue;
+    Scene scene;
+    scene.world.rest_height = rest_height;
+    const std::string text = to_json_text(scene);
+    EXPECT_NE(text.find("\"rest_height\": "), std::string::npos) << text;
+    const Scene back = parse_scene(text, "round-trip");
+    EXPECT_EQ(bits(back.world.rest_height), bits(rest_height)) << text;
+    EXPECT_EQ(to_json_text(back), text);
+  }
+}
+
+TEST(SceneRoundTrip, RestHeightIsWrittenLastInTheWorldLineWhenNotTheDefault) {
+  Scene scene;
+  scene.world.gravity = {0.0, -9.81};
+  scene.world.rest_height = 0.01;
+  EXPECT_NE(to_json_text(scene).find("\"cell_size\": 0.0, \"gravity\": [0.0, -9.81], "
+                                     "\"rest_height\": 0.01}"),
+            std::string::npos)
+      << to_json_text(scene);
+  const Scene read = parse_scene(R"({"world": {"gravity": [0, -9.81], "rest_height": 0.05}})");
+  EXPECT_EQ(read.world.rest_height, 0.05);
+  // Absent is the world's default, and the default is never written: the text of a scene that
+  // gives it is that of the same scene without it.
+  EXPECT_EQ(parse_scene(R"({"world": {"boundary": "open"}})").world.rest_height,
+            WorldDef{}.rest_height);
+  EXPECT_EQ(parse_scene("{}").world.rest_height, WorldDef{}.rest_height);
+  EXPECT_EQ(to_json_text(parse_scene(R"({"world": {"gravity": [0, -1], "rest_height": 1e-3}})")),
+            to_json_text(parse_scene(R"({"world": {"gravity": [0, -1]}})")));
+  EXPECT_EQ(to_json_text(parse_scene(R"({"world": {"rest_height": 0.001}})")).find("rest_height"),
+            std::string::npos);
+}
+
+// A scene without gravity (or with gravity +0) writes no gravity key, and one with the default
+// rest height no rest_height key, so its text is that of the same scene with the fields left out,
+// and saved scenes and the reference hashes' inputs stay put.
 TEST(SceneRoundTrip, SceneWithoutGravityWritesNoGravityKey) {
   const std::string text = R"({"world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10],
     "gravity": [0, 0]}, "balls": [{"position": [2, 5], "velocity": [1, 0]}]})";
@@ -183,11 +226,14 @@ TEST(SceneRoundTrip, SceneWithoutGravityWritesNoGravityKey) {
   for (const auto& entry : std::filesystem::directory_iterator(CAROM_EXAMPLES_DIR)) {
     if (entry.path().extension() != ".json") continue;
     const Scene scene = load_scene(entry.path());
-    if (scene.world.gravity != Vec2{}) continue;
     const std::string written = to_json_text(scene);
     const std::size_t world = written.find("\n  \"world\": {");
     ASSERT_NE(world, std::string::npos) << entry.path();
     const std::string world_line = written.substr(world, written.find('\n', world + 1) - world);
+    if (scene.world.rest_height == WorldDef{}.rest_height) {
+      EXPECT_EQ(world_line.find("rest_height"), std::string::npos) << entry.path();
+    }
+    if (scene.world.gravity != Vec2{}) continue;
     EXPECT_EQ(world_line.find("gravity"), std::string::npos) << entry.path();
   }
 }

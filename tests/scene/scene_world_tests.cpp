@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "carom/scene.hpp"
 
@@ -178,6 +179,45 @@ TEST(SceneWorld, CapturedSceneHoldsTheGravityNow) {
   EXPECT_EQ(again.world.def().gravity, (Vec2{1.5, -0.25}));
   sw.world.set_gravity({});
   EXPECT_EQ(to_json_text(capture_scene(sw)).find("gravity"), std::string::npos);
+}
+
+// The scene's rest height is the world's, and a captured scene records the one the world ran with.
+TEST(SceneWorld, RestHeightReachesTheWorldAndTheCapturedScene) {
+  SceneWorld sw = make_world(parse_scene(R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10], "gravity": [0, -9.81],
+              "rest_height": 0.02},
+    "balls": [{"position": [5, 5]}]})"));
+  EXPECT_EQ(sw.world.def().rest_height, 0.02);
+  const Scene captured = capture_scene(sw);
+  EXPECT_EQ(captured.world.rest_height, 0.02);
+  EXPECT_NE(to_json_text(captured).find("\"rest_height\": 0.02}"), std::string::npos);
+  const SceneWorld again = make_world(parse_scene(to_json_text(captured)));
+  EXPECT_EQ(again.world.def().rest_height, 0.02);
+
+  const SceneWorld plain = make_world(parse_scene(R"({"balls": [{"position": [3, 4]}]})"));
+  EXPECT_EQ(plain.world.def().rest_height, WorldDef{}.rest_height);
+  EXPECT_EQ(to_json_text(capture_scene(plain)).find("rest_height"), std::string::npos);
+}
+
+// A ball dropped inelastically on the floor comes to rest once a bounce would rise less than the
+// rest height: a larger rest height stops it sooner, in fewer contacts, and both end at rest.
+TEST(SceneWorld, LargerRestHeightSettlesABouncingBallSooner) {
+  const auto contacts_to_rest = [](const char* rest_height) {
+    SceneWorld sw = make_world(parse_scene(std::string(R"({
+      "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10], "restitution": 0.5,
+                "gravity": [0, -9.81])") + rest_height +
+                                           R"(},
+      "balls": [{"position": [5, 5], "radius": 0.5}]})"));
+    std::vector<ContactEvent> contacts;
+    step_scene(sw, 10.0, &contacts);
+    EXPECT_EQ(sw.world.velocity(sw.balls[0]), Vec2{}) << rest_height;
+    EXPECT_NEAR(sw.world.position(sw.balls[0]).y, 0.5, 1e-9) << rest_height;
+    return contacts.size();
+  };
+  const std::size_t by_default = contacts_to_rest("");
+  const std::size_t coarse = contacts_to_rest(R"(, "rest_height": 0.1)");
+  EXPECT_LT(coarse, by_default);
+  EXPECT_GE(coarse, 1U);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// carom's World in the peers benchmark: a closed box (Boundary::box), elastic disks, and
-// everything else at its defaults; the world chooses its own grid. Nothing is tuned.
+// carom's World in the peers benchmark: a closed box (Boundary::box), the scene's gravity and
+// restitution, and everything else at its defaults (the world chooses its own grid; under gravity
+// the rest height is the default thousandth of a radius). Nothing is tuned.
 #include <algorithm>
 #include <memory>
 #include <vector>
@@ -62,7 +63,8 @@ class CaromEngine final : public Engine {
     def.boundary = Boundary::box;
     def.lower = scene.lower;
     def.upper = scene.upper;
-    def.restitution = 1.0;
+    def.restitution = scene.restitution;
+    def.gravity = scene.gravity;
     return def;
   }
 

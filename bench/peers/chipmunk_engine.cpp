@@ -1,15 +1,20 @@
-// Chipmunk 7 in the peers benchmark. Set as the scene asks: gravity zero, damping 1 (none; the
-// default), elasticity 1 and friction 0 on every shape (Chipmunk multiplies the two shapes'
-// elasticities), circles whose moment is a uniform disk's. Left at Chipmunk's defaults: 10 solver
-// iterations, the collision slop (0.1 length units of overlap allowed), the collision bias, the
-// bounding-box-tree broad phase, no sleeping. With the environment variable
-// CAROM_PEERS_CHIPMUNK_HASH set, Chipmunk's spatial hash (cells one diameter wide, ten per disk)
-// replaces the tree; on this scene it was slower (7.2 against 2.7 ms per step at N = 10⁴, packing
-// 0.2; about the same at 10⁵), so the report keeps the default. Chipmunk has no continuous
-// collision: a `bullet` ball is an ordinary ball. The walls are static boxes one length unit thick
-// outside the box.
+// Chipmunk 7 in the peers benchmark. Set as the scene asks: the scene's gravity, damping 1
+// (none; the default), friction 0 on every shape, and elasticity the square root of the scene's
+// restitution on every shape (Chipmunk multiplies two shapes' elasticities, so every pair, walls
+// included, gets the scene's; it has no restitution threshold: every contact bounces), circles
+// whose moment is a uniform disk's (without friction nothing turns them). Left at Chipmunk's
+// defaults: 10 solver iterations, the collision slop (0.1 length units of overlap allowed), the
+// collision bias, the bounding-box-tree broad phase, and no sleeping, unless the scene allows it:
+// then bodies sleep after half a second (Box2D's b2_timeToSleep) below Chipmunk's idle speed,
+// which it derives from gravity (|g|·dt, 0.16 here), by components of touching bodies. With the
+// environment variable CAROM_PEERS_CHIPMUNK_HASH set, Chipmunk's spatial hash (cells one diameter
+// wide, ten per disk) replaces the tree; on the gas it was slower (7.2 against 2.7 ms per step at
+// N = 10⁴, packing 0.2; about the same at 10⁵), so the report keeps the default. Chipmunk has no
+// continuous collision: a `bullet` ball is an ordinary ball. The walls are static boxes one
+// length unit thick outside the box.
 #include <chipmunk/chipmunk.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -21,11 +26,16 @@ namespace carom::peers {
 namespace {
 
 constexpr double kWallThickness = 1.0;
+// How long a body must stay idle before it sleeps, when the scene allows sleeping: Box2D's
+// b2_timeToSleep, so that the two peers sleep alike.
+constexpr double kTimeToSleep = 0.5;
 
 class ChipmunkEngine final : public Engine {
  public:
-  explicit ChipmunkEngine(const Scene& scene) : space_(cpSpaceNew()) {
-    cpSpaceSetGravity(space_, cpvzero);
+  explicit ChipmunkEngine(const Scene& scene)
+      : space_(cpSpaceNew()), elasticity_(std::sqrt(scene.restitution)) {
+    cpSpaceSetGravity(space_, cpv(scene.gravity.x, scene.gravity.y));
+    if (scene.sleeping) cpSpaceSetSleepTimeThreshold(space_, kTimeToSleep);
     if (std::getenv("CAROM_PEERS_CHIPMUNK_HASH") != nullptr) {
       cpSpaceUseSpatialHash(space_, 1.0, static_cast<int>(10 * scene.balls.size()));
     }
@@ -70,7 +80,7 @@ class ChipmunkEngine final : public Engine {
 
  private:
   void add_shape(cpShape* shape) {
-    cpShapeSetElasticity(shape, 1.0);
+    cpShapeSetElasticity(shape, elasticity_);
     cpShapeSetFriction(shape, 0.0);
     cpSpaceAddShape(space_, shape);
     shapes_.push_back(shape);
@@ -90,6 +100,7 @@ class ChipmunkEngine final : public Engine {
   }
 
   cpSpace* space_;
+  double elasticity_;
   std::vector<cpBody*> bodies_;
   std::vector<cpShape*> shapes_;
 };

@@ -1,7 +1,7 @@
 // carom peers benchmark: one engine behind a small interface, so that the harness times and
 // checks carom, Box2D and Chipmunk the same way. Each adapter sets its engine up as the scene
-// asks (elastic, frictionless, no gravity, no damping, four static walls) with the engine's
-// documented defaults for everything else; each adapter's file says what it had to set.
+// asks (its gravity and restitution, frictionless, no damping, four static walls) with the
+// engine's documented defaults for everything else; each adapter's file says what it had to set.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // carom_peers: carom beside Box2D 2.4 and Chipmunk 7 on the same scenes.
-//   carom_peers run --engine E [--scene gas|bullets] [--n N] [--packing P] [--steps S] [--seed K]
-//       [--no-checks]
+//   carom_peers run --engine E [--scene gas|bullets|gravity] [--n N] [--packing P] [--steps S]
+//       [--seed K] [--no-checks] [--sleeping]
 //       one engine on one scene in this process; prints one line of key=value results
 //   carom_peers report [--out FILE] [--quick | --smoke] [--engines a,b] [--command TEXT]
 //       every case, each in a process of its own; writes the Markdown report
@@ -23,8 +23,8 @@ namespace {
 constexpr int kExitUsage = 2;
 
 constexpr const char* kUsage =
-    "usage: carom_peers run --engine E [--scene gas|bullets] [--n N] [--packing P] [--steps S] "
-    "[--seed K] [--no-checks]\n"
+    "usage: carom_peers run --engine E [--scene gas|bullets|gravity] [--n N] [--packing P] "
+    "[--steps S] [--seed K] [--no-checks] [--sleeping]\n"
     "       carom_peers report [--out FILE] [--quick | --smoke] [--engines a,b] [--command TEXT]\n"
     "       carom_peers engines\n";
 
@@ -72,14 +72,16 @@ int run(const std::vector<std::string>& args) {
       spec.steps = number_of<std::uint32_t>(args, i, 1, 1'000'000);
     } else if (args[i] == "--no-checks") {
       spec.checks = false;
+    } else if (args[i] == "--sleeping") {
+      spec.sleeping = true;
     } else if (args[i] == "--seed") {
       spec.seed = number_of<std::uint64_t>(args, i, 0, std::uint64_t{1} << 53U);
     } else {
       throw UsageError("unknown option " + args[i]);
     }
   }
-  if (spec.scene != "gas" && spec.scene != "bullets") {
-    throw UsageError("--scene " + spec.scene + ": expected gas or bullets");
+  if (spec.scene != "gas" && spec.scene != "bullets" && spec.scene != "gravity") {
+    throw UsageError("--scene " + spec.scene + ": expected gas, bullets or gravity");
   }
   bool known = false;
   for (const auto& engine : carom::peers::available_engines()) known |= engine.name == spec.engine;

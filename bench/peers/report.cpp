@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -40,6 +41,14 @@ constexpr std::uint32_t kSmokeSteps = 10;
 // The bullets cross the box (about 63 wide) one and a half times a step: ten steps are enough
 // for each to meet the field many times.
 constexpr std::uint32_t kBulletSteps = 10;
+// The gravity scene's size: the largest whose run stays within a few minutes. carom resolves
+// every contact of the heap as it forms, and their number grows much faster than N: at 10³
+// its worst step holds about 2.6·10⁵ contacts and its whole run takes about 30 s of CPU; at
+// 2·10³ single steps held up to 3.7·10⁶; at 10⁴ the first 15 steps of the impact averaged 1.6 s
+// of CPU and 5·10⁵ contacts, and grew. The peers run it twice, with sleeping off and on.
+constexpr std::uint32_t kGravitySize = 1'000;
+constexpr std::uint32_t kQuickGravitySize = 300;
+constexpr std::uint32_t kSmokeGravitySize = 200;
 // The comparison's goal: carom at least this many times faster per step than the fastest peer, at
 // N = 10⁴ and 10⁵.
 constexpr double kGoalSpeedUp = 5.0;
@@ -69,6 +78,7 @@ Outcome run_in_child(const std::string& self, const CaseSpec& spec) {
                                    "--packing", format("%.17g", spec.packing),
                                    "--steps",   std::to_string(spec.steps),
                                    "--seed",    std::to_string(spec.seed)};
+  if (spec.sleeping) args.emplace_back("--sleeping");
   std::vector<char*> argv;
   argv.reserve(args.size() + 1);
   for (std::string& arg : args) argv.push_back(arg.data());
@@ -212,6 +222,71 @@ void bullets_table(std::ostream& out, const std::vector<Outcome>& outcomes,
   }
 }
 
+std::string sleeping_label(const CaseSpec& spec) {
+  if (spec.engine == "carom") return "— (resting contact)";
+  return spec.sleeping ? "on" : "off";
+}
+
+const char* const kPhaseNames[kPhaseCount] = {"falling", "impact", "rest"};
+
+void gravity_time_table(std::ostream& out, const std::vector<Outcome>& outcomes,
+                        const std::vector<EngineInfo>& engines) {
+  out << "| engine | sleeping | phase | steps | median ms/step | mean ms/step | median CPU ms/step "
+         "| mean CPU ms/step | contacts/step |\n"
+      << "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const Outcome& o : outcomes) {
+    if (o.spec.scene != "gravity") continue;
+    const std::string lead =
+        "| " + engine_label(engines, o.spec.engine) + " | " + sleeping_label(o.spec) + " | ";
+    if (!o.result) {
+      out << lead << "failed: " << o.failure << " | | | | | | |\n";
+      continue;
+    }
+    for (int phase = 0; phase < kPhaseCount; ++phase) {
+      const PhaseResult& p = o.result->phases[phase];
+      out << lead << kPhaseNames[phase] << " | " << p.steps << " | ";
+      if (p.steps == 0) {
+        out << "— | — | — | — | — |\n";
+        continue;
+      }
+      out << format("%.3f", p.median_step_ms) << " | " << format("%.3f", p.mean_step_ms) << " | "
+          << format("%.3f", p.median_step_cpu_ms) << " | " << format("%.3f", p.mean_step_cpu_ms)
+          << " | "
+          << (p.contacts >= 0 ? format("%.0f", static_cast<double>(p.contacts) / p.steps)
+                              : std::string("—"))
+          << " |\n";
+    }
+  }
+}
+
+void gravity_check_table(std::ostream& out, const std::vector<Outcome>& outcomes,
+                         const std::vector<EngineInfo>& engines) {
+  out << "| engine | sleeping | steps | CPU s, all steps | settled at (s) | rms speed at the end | "
+         "energy change | largest energy rise | largest overlap | into a wall | missed (deepest) "
+         "| left box | peak MiB (engine's share) |\n"
+      << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Outcome& o : outcomes) {
+    if (o.spec.scene != "gravity") continue;
+    out << "| " << engine_label(engines, o.spec.engine) << " | " << sleeping_label(o.spec) << " | "
+        << o.spec.steps << " | ";
+    if (!o.result) {
+      out << "failed: " << o.failure << " | | | | | | | | | |\n";
+      continue;
+    }
+    const CaseResult& r = *o.result;
+    double cpu_seconds = 0.0;
+    for (const PhaseResult& p : r.phases) cpu_seconds += p.mean_step_cpu_ms * p.steps / 1e3;
+    out << format("%.1f", cpu_seconds) << " | "
+        << (r.settled_time >= 0.0 ? format("%.2f", r.settled_time) : std::string("not settled"))
+        << " | " << format("%.1e", r.end_rms_speed) << " | " << format("%.3f", r.energy_drift)
+        << " | " << format("%.2e", r.energy_rise) << " | " << format("%.2e", r.largest_overlap)
+        << " | " << format("%.2e", r.largest_wall_overlap) << " | " << r.pass_throughs
+        << (r.pass_throughs > 0 ? " (" + format("%.1e", r.deepest_pass_through) + ")" : "") << " | "
+        << r.left_box << (r.non_finite ? " (non-finite)" : "") << " | " << mib(r.peak_kib) << " ("
+        << mib(r.peak_kib - r.harness_kib) << ") |\n";
+  }
+}
+
 void goal_table(std::ostream& out, const std::vector<Outcome>& outcomes,
                 const std::vector<EngineInfo>& engines) {
   out << "| N | packing | carom median ms/step (CPU) | fastest peer | its median ms/step (CPU) | "
@@ -244,6 +319,30 @@ void goal_table(std::ostream& out, const std::vector<Outcome>& outcomes,
         << " (" << format("%.3f", f.median_step_cpu_ms) << ") | " << format("%.1f×", wall) << " | "
         << format("%.1f×", cpu) << " | " << (cpu >= kGoalSpeedUp ? "met" : "**not met**") << " |\n";
   }
+}
+
+// The gravity scene for every engine, the peers with sleeping off and on, each for the scene's
+// whole length (all three phases) but in the smoke test.
+std::vector<CaseSpec> gravity_cases(const ReportOptions& options,
+                                    const std::vector<std::string>& engines) {
+  CaseSpec base;
+  base.scene = "gravity";
+  base.n = options.quick ? kQuickGravitySize : kGravitySize;
+  if (options.smoke) base.n = kSmokeGravitySize;
+  base.steps = static_cast<std::uint32_t>(
+      std::ceil(make_gravity_scene(base.n, base.seed).end_time * kStepsPerSecond));
+  if (options.smoke) base.steps = kSmokeSteps;
+  std::vector<CaseSpec> specs;
+  for (const std::string& engine : engines) {
+    for (const bool sleeping : {false, true}) {
+      if (sleeping && engine == "carom") continue;  // carom has no sleeping: its balls rest
+      CaseSpec spec = base;
+      spec.engine = engine;
+      spec.sleeping = sleeping;
+      specs.push_back(spec);
+    }
+  }
+  return specs;
 }
 
 std::vector<CaseSpec> cases(const ReportOptions& options, const std::vector<EngineInfo>& all) {
@@ -286,7 +385,61 @@ std::vector<CaseSpec> cases(const ReportOptions& options, const std::vector<Engi
     spec.steps = bullet_steps;
     specs.push_back(spec);
   }
+  for (const CaseSpec& spec : gravity_cases(options, engines)) specs.push_back(spec);
   return specs;
+}
+
+void gravity_section(std::ostream& out, const ReportOptions& options,
+                     const std::vector<Outcome>& outcomes, const std::vector<EngineInfo>& engines) {
+  const std::vector<CaseSpec> specs = gravity_cases(options, {"carom"});
+  const Scene scene = make_gravity_scene(specs.front().n, specs.front().seed);
+  const double dt = 1.0 / kStepsPerSecond;
+  out << "\n## Gravity: disks poured into a box\n\n"
+      << specs.front().n << " disks of radius " << format("%.1f", kGasRadius) << " and mass "
+      << format("%.0f", kGasMass)
+      << " on a square lattice, 1.5 diameters apart, filling the upper "
+         "two thirds of a tall box ("
+      << format("%.0f", scene.upper.x - scene.lower.x) << " wide, "
+      << format("%.0f", scene.upper.y - scene.lower.y)
+      << " high) with velocity components normal with standard deviation "
+      << format("%.1f", kPourVelocitySd) << " (seed " << specs.front().seed << "); gravity "
+      << format("%.2f", kGravity) << " down, restitution " << format("%.1f", kPourRestitution)
+      << " for every contact (ball on ball and ball on wall), no friction, no damping; steps of "
+         "1/60 s, "
+      << specs.front().steps
+      << " of them. The phases, by time and the same for every engine: *falling* until the "
+         "lowest disk, falling freely, would touch the floor ("
+      << format("%.2f", scene.impact_start)
+      << " s); *impact* until the highest would reach the top of the heap (its height from the "
+         "disks at packing "
+      << format("%.2f", kPourHeapPacking) << " across the box) plus "
+      << format("%.0f", kPourSettleSeconds) << " s (" << format("%.2f", scene.rest_start)
+      << " s); *rest* after that, to " << format("%.2f", scene.end_time)
+      << " s. Set to match: carom gets the gravity, the restitution and its default rest height "
+         "(a thousandth of a radius); Box2D restitution 0.5, friction 0 and, as its restitution "
+         "threshold, carom's: carom ends a bounce off a still floor in contact when it would lift "
+         "the disk less than the rest height, that is below an approach speed of √(2·g·h)/e, "
+         "about 0.2; Chipmunk elasticity √0.5 on every shape (it multiplies two shapes') and "
+         "friction 0, and it has no threshold (every contact bounces). Without friction neither "
+         "peer turns a disk. The peers run twice: sleeping off, and on (Box2D's default; Chipmunk "
+         "after half a second idle, as Box2D); carom's balls rest instead, at no cost. Time per "
+         "step as in the gas, with the mean beside the median, since the impact's cost lies in a "
+         "few heavy steps. Contacts/step: carom's contacts in the phase over its steps. Settled "
+         "at: the time from which the root-mean-square speed stayed below "
+      << format("%.2f", kSettledRmsSpeed)
+      << " (Box2D's sleep tolerance) to the end. Energy: kinetic plus gravity's potential, "
+         "counted from a disk resting on the floor (so it is what there is to lose); energy "
+         "change: (E_end − E_start)/E_start; largest energy rise: the largest rise of E above its "
+         "lowest value so far, at any step's end, over E_start. Largest overlap as in the gas; "
+         "into a wall: the deepest a disk reached into a wall, as a fraction of its radius. "
+         "Missed: as in the gas, but passes shallower than |g|·dt²/4 ("
+      << format("%.1e", length(scene.gravity) * dt * dt / 4.0 / (2.0 * kGasRadius))
+      << " of the sum of radii) do not count: under gravity a path between two bends is a "
+         "parabola, the check follows its chord, and two chords can come that much closer than "
+         "the paths did.\n\n";
+  gravity_time_table(out, outcomes, engines);
+  out << "\n";
+  gravity_check_table(out, outcomes, engines);
 }
 
 // The hand-written part of the report: what the figures mean. Kept in a Markdown file beside the
@@ -312,6 +465,7 @@ int write_report(const ReportOptions& options, const std::string& self) {
     const CaseSpec& spec = specs[i];
     std::cerr << "[" << i + 1 << "/" << specs.size() << "] " << spec.engine << " " << spec.scene;
     if (spec.scene == "gas") std::cerr << " n=" << spec.n << " packing=" << spec.packing;
+    if (spec.scene == "gravity") std::cerr << " n=" << spec.n << (spec.sleeping ? " sleeping" : "");
     std::cerr << " steps=" << spec.steps << " ... " << std::flush;
     outcomes.push_back(run_in_child(self, spec));
     const Outcome& o = outcomes.back();
@@ -397,6 +551,7 @@ int write_report(const ReportOptions& options, const std::string& self) {
       << " gas disks (packing 0.2, box about 63 wide). A bullet that went through at least one "
          "disk in any step (the missed-collision test) counts as through.\n\n";
   bullets_table(out, outcomes, engines);
+  gravity_section(out, options, outcomes, engines);
   out << "\n## The goal: carom at least " << format("%.0f", kGoalSpeedUp)
       << "× faster per step than the fastest peer (N ≥ 10⁴)\n\n";
   goal_table(out, outcomes, engines);

@@ -37,9 +37,31 @@ std::int64_t peak_resident_kib() {
 }
 
 Scene make_scene(const CaseSpec& spec) {
-  if (spec.scene == "gas") return make_gas_scene(spec.n, spec.packing, spec.seed);
-  if (spec.scene == "bullets") return make_bullets_scene(spec.seed, kStepsPerSecond);
-  throw std::invalid_argument("unknown scene '" + spec.scene + "' (gas or bullets)");
+  Scene scene;
+  if (spec.scene == "gas") {
+    scene = make_gas_scene(spec.n, spec.packing, spec.seed);
+  } else if (spec.scene == "bullets") {
+    scene = make_bullets_scene(spec.seed, kStepsPerSecond);
+  } else if (spec.scene == "gravity") {
+    scene = make_gravity_scene(spec.n, spec.seed);
+  } else {
+    throw std::invalid_argument("unknown scene '" + spec.scene + "' (gas, bullets or gravity)");
+  }
+  scene.sleeping = spec.sleeping;
+  return scene;
+}
+
+// The phase a step ending at `time` belongs to.
+Phase phase_at(const Scene& scene, double time) {
+  if (time <= scene.impact_start) return kFalling;
+  if (time <= scene.rest_start) return kImpact;
+  return kRest;
+}
+
+double mean(const std::vector<double>& values) {
+  double total = 0.0;
+  for (const double v : values) total += v;
+  return values.empty() ? 0.0 : total / static_cast<double>(values.size());
 }
 
 double median(std::vector<double> values) {
@@ -88,15 +110,52 @@ CaseResult run_case(const CaseSpec& spec) {
   result.setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
   // The start as the engine holds it (Box2D has rounded it to single precision).
   engine->read(before, velocities);
-  const double energy_start = kinetic_energy(velocities, masses);
-
+  // Potential energy counts from a disk resting on the floor, the lowest it can go.
+  double floor_radius = 0.0;
+  for (const double r : radii) floor_radius = std::max(floor_radius, r);
+  const Vec2 floor{0.0, scene.lower.y + floor_radius};
+  const auto energy = [&](std::span<const Vec2> positions) {
+    return kinetic_energy(velocities, masses) +
+           potential_energy(positions, masses, scene.gravity, floor);
+  };
+  const double energy_start = energy(before);
+  double energy_lowest = energy_start;
+  double total_mass = 0.0;
+  for (const double m : masses) total_mass += m;
+  const auto rms_speed = [&] {
+    return std::sqrt(2.0 * kinetic_energy(velocities, masses) / total_mass);
+  };
+  // Under gravity the path between two bends is a parabola; the pass-through check follows its
+  // chord, which sags from it by up to |g|·dt²/8 over a step, so two disks' chords may come
+  // |g|·dt²/4 closer than their paths did. Passes shallower than that, as a fraction of the sum of
+  // radii, are not counted (for every engine alike).
   const double dt = 1.0 / kStepsPerSecond;
+  const double sag = length(scene.gravity) * dt * dt / 4.0;
+  double smallest_radius_sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == 0 || 2.0 * radii[i] < smallest_radius_sum) smallest_radius_sum = 2.0 * radii[i];
+  }
+  const double min_depth = smallest_radius_sum > 0.0 ? sag / smallest_radius_sum : 0.0;
+  const bool phased = scene.impact_start > 0.0;
+  std::vector<double> phase_seconds[kPhaseCount];
+  std::vector<double> phase_cpu_seconds[kPhaseCount];
+  std::int64_t contacts_before = engine->contact_count();
+  std::int64_t phase_contacts[kPhaseCount] = {0, 0, 0};
+
   for (std::uint32_t step = 0; step < spec.steps; ++step) {
     const double cpu_start = thread_cpu_seconds();
     const Clock::time_point start = Clock::now();
     engine->step(dt);
     step_seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     step_cpu_seconds.push_back(thread_cpu_seconds() - cpu_start);
+    if (phased) {
+      const Phase phase = phase_at(scene, (step + 1) * dt);
+      phase_seconds[phase].push_back(step_seconds.back());
+      phase_cpu_seconds[phase].push_back(step_cpu_seconds.back());
+      const std::int64_t contacts = engine->contact_count();
+      phase_contacts[phase] += contacts - contacts_before;
+      contacts_before = contacts;
+    }
     if (!spec.checks) continue;
 
     engine->read(after, velocities);
@@ -104,8 +163,18 @@ CaseResult run_case(const CaseSpec& spec) {
     engine->path_breaks(dt, breaks);
     result.largest_overlap = std::max(
         result.largest_overlap, detectors.largest_overlap(after, radii, scene.lower, scene.upper));
-    for (const PassThrough& pair :
-         detectors.find_pass_throughs(before, after, radii, breaks, scene.lower, scene.upper)) {
+    result.largest_wall_overlap = std::max(
+        result.largest_wall_overlap, largest_wall_overlap(after, radii, scene.lower, scene.upper));
+    const double energy_now = energy(after);
+    result.energy_rise = std::max(result.energy_rise, (energy_now - energy_lowest) / energy_start);
+    energy_lowest = std::min(energy_lowest, energy_now);
+    if (rms_speed() >= kSettledRmsSpeed) {
+      result.settled_time = -1.0;
+    } else if (result.settled_time < 0.0) {
+      result.settled_time = (step + 1) * dt;
+    }
+    for (const PassThrough& pair : detectors.find_pass_throughs(
+             before, after, radii, breaks, scene.lower, scene.upper, min_depth)) {
       ++result.pass_throughs;
       result.deepest_pass_through = std::max(result.deepest_pass_through, pair.depth);
       if (scene.balls[pair.a].bullet != scene.balls[pair.b].bullet) {
@@ -120,7 +189,17 @@ CaseResult run_case(const CaseSpec& spec) {
 
   result.peak_kib = peak_resident_kib();
   if (!spec.checks) engine->read(before, velocities);
-  result.energy_drift = (kinetic_energy(velocities, masses) - energy_start) / energy_start;
+  result.energy_drift = (energy(before) - energy_start) / energy_start;
+  result.end_rms_speed = rms_speed();
+  for (int phase = 0; phase < kPhaseCount; ++phase) {
+    PhaseResult& out = result.phases[phase];
+    out.steps = static_cast<std::uint32_t>(phase_seconds[phase].size());
+    out.median_step_ms = median(phase_seconds[phase]) * 1e3;
+    out.median_step_cpu_ms = median(phase_cpu_seconds[phase]) * 1e3;
+    out.mean_step_ms = mean(phase_seconds[phase]) * 1e3;
+    out.mean_step_cpu_ms = mean(phase_cpu_seconds[phase]) * 1e3;
+    out.contacts = contacts_before >= 0 ? phase_contacts[phase] : -1;
+  }
   result.bullets_through =
       static_cast<std::uint32_t>(std::count(bullet_through.begin(), bullet_through.end(), 1));
   result.left_box = static_cast<std::uint32_t>(std::count(left.begin(), left.end(), 1));
@@ -156,8 +235,15 @@ std::string to_line(const CaseResult& r) {
        << " harness_kib=" << r.harness_kib << " energy_drift=" << r.energy_drift
        << " overlap=" << r.largest_overlap << " pass_throughs=" << r.pass_throughs
        << " deepest=" << r.deepest_pass_through << " bullets_through=" << r.bullets_through
-       << " left_box=" << r.left_box << " non_finite=" << r.non_finite
-       << " contacts=" << r.contacts;
+       << " left_box=" << r.left_box << " non_finite=" << r.non_finite << " contacts=" << r.contacts
+       << " sleeping=" << (r.spec.sleeping ? 1 : 0) << " energy_rise=" << r.energy_rise
+       << " end_rms_speed=" << r.end_rms_speed << " settled_time=" << r.settled_time
+       << " wall_overlap=" << r.largest_wall_overlap;
+  for (int phase = 0; phase < kPhaseCount; ++phase) {
+    const PhaseResult& p = r.phases[phase];
+    line << " phase" << phase << "=" << p.steps << "," << p.median_step_ms << "," << p.mean_step_ms
+         << "," << p.median_step_cpu_ms << "," << p.mean_step_cpu_ms << "," << p.contacts;
+  }
   return line.str();
 }
 
@@ -195,6 +281,20 @@ std::optional<CaseResult> parse_line(std::string_view line) {
     r.left_box = static_cast<std::uint32_t>(std::stoul(fields.at("left_box")));
     r.non_finite = static_cast<std::uint32_t>(std::stoul(fields.at("non_finite")));
     r.contacts = std::stoll(fields.at("contacts"));
+    r.spec.sleeping = fields.at("sleeping") == "1";
+    r.energy_rise = std::stod(fields.at("energy_rise"));
+    r.end_rms_speed = std::stod(fields.at("end_rms_speed"));
+    r.settled_time = std::stod(fields.at("settled_time"));
+    r.largest_wall_overlap = std::stod(fields.at("wall_overlap"));
+    for (int phase = 0; phase < kPhaseCount; ++phase) {
+      std::istringstream parts(fields.at("phase" + std::to_string(phase)));
+      PhaseResult& p = r.phases[phase];
+      char commas[5] = {};
+      parts >> p.steps >> commas[0] >> p.median_step_ms >> commas[1] >> p.mean_step_ms >>
+          commas[2] >> p.median_step_cpu_ms >> commas[3] >> p.mean_step_cpu_ms >> commas[4] >>
+          p.contacts;
+      if (!parts || std::string_view(commas, 5) != ",,,,,") return std::nullopt;
+    }
     return r;
   } catch (const std::exception&) {
     return std::nullopt;

@@ -106,4 +106,46 @@ Scene make_bullets_scene(std::uint64_t seed, double steps_per_second) {
   return scene;
 }
 
+Scene make_gravity_scene(std::uint32_t n, std::uint64_t seed) {
+  if (n == 0) throw std::invalid_argument("scene: gravity needs n >= 1");
+  Scene scene;
+  scene.name = "gravity";
+  scene.gravity = {0.0, -kGravity};
+  scene.restitution = kPourRestitution;
+  const std::uint32_t columns =
+      static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const std::uint32_t rows = (n + columns - 1) / columns;
+  const double pitch = kPourPitch * 2.0 * kGasRadius;
+  const double width = columns * pitch;
+  const double lattice_height = rows * pitch;
+  // The lattice fills the upper two thirds; the lower third is left for the heap, which at the
+  // heap's packing is lower than that (about 0.4 of the lattice's height), so no disk starts
+  // inside the heap it will form.
+  const double height = 1.5 * lattice_height;
+  scene.lower = {-width / 2.0, -height / 2.0};
+  scene.upper = {width / 2.0, height / 2.0};
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> velocity(0.0, kPourVelocitySd);
+  scene.balls.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    SceneBall ball;
+    const double column = i % columns;
+    const double row = i / columns;  // whole rows: integer division
+    ball.position = {scene.lower.x + (column + 0.5) * pitch,
+                     scene.upper.y - lattice_height + (row + 0.5) * pitch};
+    const double vx = velocity(random);
+    const double vy = velocity(random);
+    ball.velocity = {vx, vy};
+    scene.balls.push_back(ball);
+  }
+  const double disk_area = std::numbers::pi * kGasRadius * kGasRadius;
+  const double heap_top = scene.lower.y + n * disk_area / (kPourHeapPacking * width);
+  const double lowest = scene.balls.front().position.y - kGasRadius;
+  const double highest = scene.balls.back().position.y - kGasRadius;
+  scene.impact_start = std::sqrt(2.0 * (lowest - scene.lower.y) / kGravity);
+  scene.rest_start = std::sqrt(2.0 * (highest - heap_top) / kGravity) + kPourSettleSeconds;
+  scene.end_time = scene.rest_start + kPourRestSeconds;
+  return scene;
+}
+
 }  // namespace carom::peers

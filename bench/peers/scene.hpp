@@ -19,13 +19,26 @@ struct SceneBall {
   bool bullet = false;  // a fast ball: engines that have a continuous mode for them turn it on
 };
 
-// Disks inside a closed square box [lower, upper]² of four static walls; elastic, frictionless,
-// no gravity, no damping.
+// Disks inside a closed box [lower, upper] of four static walls; frictionless, no damping. The
+// gas and the bullets are elastic and weightless; the gravity scene sets gravity, restitution and
+// its phases' times.
 struct Scene {
   std::string name;
   Vec2 lower;
   Vec2 upper;
   std::vector<SceneBall> balls;
+  Vec2 gravity{};            // the acceleration of every disk
+  double restitution = 1.0;  // of every contact, ball on ball and ball on wall
+  // Where the run's phases begin, in seconds, for a scene that has them (0: none): falling until
+  // the first disk can reach the floor, impact until the last has landed and the heap has had
+  // time to settle, rest after. Set from the scene's geometry, so the same for every engine.
+  double impact_start = 0.0;
+  double rest_start = 0.0;
+  double end_time = 0.0;  // the run's length that shows all three phases
+  // Whether a time-stepped engine may put still bodies to sleep (stop moving and checking them
+  // until something touches them), its own way of making a heap at rest cheap; carom's resting
+  // balls cost nothing without it. Off: every body is stepped every step.
+  bool sleeping = false;
 };
 
 inline constexpr double kGasRadius = 0.5;
@@ -52,5 +65,23 @@ inline constexpr double kBulletFieldPacking = 0.2;
 // their diameters per step of 1/60 s, spread evenly up the strip so that each crosses the field.
 // Over one step a bullet moves 100 length units, more than the box is wide (about 63).
 [[nodiscard]] Scene make_bullets_scene(std::uint64_t seed, double steps_per_second);
+
+inline constexpr double kGravity = 9.81;           // length units per second², downwards
+inline constexpr double kPourRestitution = 0.5;    // every contact
+inline constexpr double kPourPitch = 1.5;          // the lattice's spacing: 1.5 diameters
+inline constexpr double kPourVelocitySd = 0.1;     // each velocity component at the start
+inline constexpr double kPourSettleSeconds = 2.0;  // after the last landing, before rest
+// The rest phase's length: long enough for the peers' heaps to settle too (at N = 10³ Box2D's
+// root-mean-square speed fell below 0.01 about 22 s into the run, Chipmunk's about 11 s).
+inline constexpr double kPourRestSeconds = 25.0;
+inline constexpr double kPourHeapPacking = 0.82;  // a frictionless heap's, for its height
+
+// The gravity scene: n disks (radius 0.5, mass 1) on a square lattice of ⌈√n⌉ columns, 1.5
+// diameters apart, filling the upper two thirds of a box as wide as the lattice (the lower third
+// is empty and holds the heap they make), with velocity components normal with standard deviation
+// 0.1; gravity 9.81 down, restitution 0.5, no friction. The phases: falling until the lowest
+// disk, free, would touch the floor; impact until the highest, free, would reach the heap's top
+// (its height from n disks at packing 0.82 across the box) plus 2 s to settle; then 25 s of rest.
+[[nodiscard]] Scene make_gravity_scene(std::uint32_t n, std::uint64_t seed);
 
 }  // namespace carom::peers

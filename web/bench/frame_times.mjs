@@ -1,8 +1,9 @@
 // The frame-time benchmark of the "Many balls" page (not a test): N balls in headless chromium,
 // the page's own timings of each frame (window.caromFrameStats: the world's step, the drawing,
-// and the interval between animation frames), summarised.
+// and the interval between animation frames), summarised. `galton` in place of an N measures the
+// "Galton board" page instead, pouring 40 balls a second from the start.
 //
-//   node web/bench/frame_times.mjs [--json] [--seconds S] [N ...]      (default N: 10000)
+//   node web/bench/frame_times.mjs [--json] [--seconds S] [N | galton ...]   (default N: 10000)
 //
 // The page advances 1/60 time unit per animation frame; the browser asks for a frame every
 // 1/60 s when the previous one is done in time, so intervals near 16.7 ms mean 60 frames a second.
@@ -14,9 +15,11 @@ const args = process.argv.slice(2);
 const json = args.includes('--json');
 const secondsAt = args.indexOf('--seconds');
 const seconds = secondsAt >= 0 ? Number(args[secondsAt + 1]) : 10;
-const counts = args.filter((a, i) => /^\d+$/.test(a) && (secondsAt < 0 || i !== secondsAt + 1))
-                   .map(Number);
+const counts = args.filter((a, i) => (/^\d+$/.test(a) || a === 'galton') &&
+                                     (secondsAt < 0 || i !== secondsAt + 1))
+                   .map((a) => (a === 'galton' ? a : Number(a)));
 if (counts.length === 0) counts.push(10000);
+const GALTON = 'galton.html?rate=40';
 const WARM_UP_MS = 2000;  // the lattice start melts and the JIT settles before timing
 const FRAME_BUDGET_MS = 1000 / 60;
 
@@ -32,7 +35,8 @@ const session = await openBrowser();
 const results = [];
 try {
   for (const n of counts) {
-    const {page, problems} = await openPage(session, `many-balls.html?n=${n}`);
+    const galton = n === 'galton';
+    const {page, problems} = await openPage(session, galton ? GALTON : `many-balls.html?n=${n}`);
     await page.waitForTimeout(WARM_UP_MS);
     const t0 = Number(await readout(page, 'time'));
     const c0 = Number(await readout(page, 'collisions'));
@@ -45,7 +49,9 @@ try {
     const c1 = Number(await readout(page, 'collisions'));
     const work = stats.step.map((s, i) => s + (stats.draw[i] ?? 0));
     results.push({
-      balls: Number(await readout(page, 'balls')),
+      // The Galton board's balls at the end of the run (poured, of its 1000).
+      balls: galton ? `${await readout(page, 'poured')} on the Galton board`
+                    : Number(await readout(page, 'balls')),
       wall_seconds: seconds,
       simulated_time: t1 - t0,
       frames_per_second: stats.interval.length / seconds,

@@ -38,6 +38,13 @@ void DrawnWorld::add_segment(const Segment& segment) {
 
 void DrawnWorld::add_arc(const Arc& arc) { static_cast<void>(scene_world_.world.add_arc(arc)); }
 
+void DrawnWorld::remove_ball(int index) {
+  const BallId ball = id(index);
+  scene_world_.world.remove_ball(ball);
+  scene_world_.balls[static_cast<std::size_t>(index)] = BallId{};
+  held_velocity_[static_cast<std::size_t>(index)].reset();
+}
+
 std::vector<Segment> DrawnWorld::segments() const {
   std::vector<Segment> segments;
   const World& world = scene_world_.world;
@@ -82,6 +89,18 @@ void DrawnWorld::scale_speeds(double factor) {
     }
   }
 }
+
+void DrawnWorld::set_velocity(int index, Vec2 velocity) {
+  const BallId ball = id(index);
+  auto& kept = held_velocity_[static_cast<std::size_t>(index)];
+  if (kept) {
+    kept = velocity;  // a held ball stands still until released
+  } else {
+    scene_world_.world.set_velocity(ball, velocity);
+  }
+}
+
+void DrawnWorld::set_gravity(Vec2 gravity) { scene_world_.world.set_gravity(gravity); }
 
 int DrawnWorld::ball_at(Vec2 point) const {
   const World& world = scene_world_.world;
@@ -138,6 +157,8 @@ int DrawnWorld::ball_count() const {
 
 Vec2 DrawnWorld::position(int index) const { return scene_world_.world.position(id(index)); }
 
+Vec2 DrawnWorld::velocity(int index) const { return scene_world_.world.velocity(id(index)); }
+
 int DrawnWorld::last_step_contacts() const {
   return static_cast<int>(scene_world_.world.contacts().size());
 }
@@ -155,7 +176,7 @@ BallId DrawnWorld::id(int index) const {
   const BallId ball = ids[static_cast<std::size_t>(index)];
   if (!present(ball)) {
     throw InvalidArgument("DrawnWorld", "index", std::to_string(index),
-                          "names a ball that fell into a pocket");
+                          "names a ball no longer in the world (a pocket or remove_ball took it)");
   }
   return ball;
 }

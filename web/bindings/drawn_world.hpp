@@ -5,7 +5,8 @@
 // Pages build one shape by shape (add_ball, add_segment, add_arc) and fill it with generated
 // balls (lattice_filling.hpp), or load a scene file (scene_loading.hpp): then the world is the
 // scene library's SceneWorld, stepped with carom::step_scene so that pockets swallow balls. A
-// ball keeps its index when it falls into a pocket; it is then no longer in the world.
+// ball keeps its index when it falls into a pocket or the page removes it (remove_ball); it is
+// then no longer in the world.
 #pragma once
 
 #include <cstdint>
@@ -32,12 +33,19 @@ class DrawnWorld {
   int add_ball(Vec2 position, Vec2 velocity, double radius, double mass);
   void add_segment(const Segment& segment);
   void add_arc(const Arc& arc);
+  // Takes the ball out of the world (a pinball's drain); its index stays taken, so the indices of
+  // the others do not change.
+  void remove_ball(int index);
 
   // ---- running ----
   // carom::step_scene (carom::World::step when there are no pockets); returns the time advanced.
   double step(double dt);
   // Multiplies every velocity by factor (> 0): the gas runs hotter or colder.
   void scale_speeds(double factor);
+  // carom::World::set_velocity (a launched ball); a held ball keeps it for its release.
+  void set_velocity(int index, Vec2 velocity);
+  // carom::World::set_gravity: from the world's time on.
+  void set_gravity(Vec2 gravity);
 
   // ---- dragging ----
   // The ball whose disc contains point (the last added among several), or -1.
@@ -61,6 +69,8 @@ class DrawnWorld {
   [[nodiscard]] const std::vector<std::string>& colors() const noexcept { return colors_; }
   [[nodiscard]] const std::vector<ScenePocket>& pockets() const noexcept { return pockets_; }
   [[nodiscard]] Vec2 position(int index) const;
+  // As the world has it: zero while the ball is held.
+  [[nodiscard]] Vec2 velocity(int index) const;
   // The walls added (the segments, then polylines' segments, and arcs of a scene), a box's
   // boundary left out.
   [[nodiscard]] std::vector<Segment> segments() const;
@@ -75,7 +85,8 @@ class DrawnWorld {
   [[nodiscard]] WallId first_own_wall() const;
   [[nodiscard]] bool present(BallId ball) const;
 
-  // The world and its balls by index (scene_world_.balls; null once potted), pockets included.
+  // The world and its balls by index (scene_world_.balls; null once potted or removed), pockets
+  // included.
   SceneWorld scene_world_;
   std::vector<std::string> colors_;
   std::vector<ScenePocket> pockets_;

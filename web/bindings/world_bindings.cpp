@@ -1,4 +1,5 @@
-// carom web: carom::World as the "Many balls" page uses it, through DrawnWorld.
+// carom web: carom::World as the "Many balls", "Galton board" and "Pinball" pages use it, through
+// DrawnWorld.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -32,11 +33,20 @@ void add_segment(DrawnWorld& w, const Segment& s) {
 void add_arc(DrawnWorld& w, const Arc& a) {
   guarded_call([&] { w.add_arc(a); });
 }
+void remove_ball(DrawnWorld& w, int index) {
+  guarded_call([&] { w.remove_ball(index); });
+}
 double step(DrawnWorld& w, double dt) {
   return guarded_call([&] { return w.step(dt); });
 }
 void scale_speeds(DrawnWorld& w, double factor) {
   guarded_call([&] { w.scale_speeds(factor); });
+}
+void set_velocity(DrawnWorld& w, int index, Vec2 velocity) {
+  guarded_call([&] { w.set_velocity(index, velocity); });
+}
+void set_gravity(DrawnWorld& w, Vec2 gravity) {
+  guarded_call([&] { w.set_gravity(gravity); });
 }
 int ball_at(const DrawnWorld& w, Vec2 point) {
   return guarded_call([&] { return w.ball_at(point); });
@@ -52,6 +62,9 @@ void release(DrawnWorld& w, int index) {
 }
 Vec2 position(const DrawnWorld& w, int index) {
   return guarded_call([&] { return w.position(index); });
+}
+Vec2 velocity(const DrawnWorld& w, int index) {
+  return guarded_call([&] { return w.velocity(index); });
 }
 
 // A Float32Array over the module's memory: no copy. It is valid until the next call into the
@@ -94,6 +107,7 @@ emscripten::val pockets(const DrawnWorld& w) {
 WorldDef def(const DrawnWorld& w) { return w.def(); }
 double world_time(const DrawnWorld& w) { return w.world().time(); }
 double kinetic_energy(const DrawnWorld& w) { return w.world().kinetic_energy(); }
+double potential_energy(const DrawnWorld& w) { return w.world().potential_energy(); }
 Vec2 momentum(const DrawnWorld& w) { return w.world().momentum(); }
 // As a double: JavaScript numbers hold integers exactly up to 2⁵³.
 double collision_count(const DrawnWorld& w) {
@@ -116,7 +130,9 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .field("upper", &WorldDef::upper)
       .field("restitution", &WorldDef::restitution)
       .field("collapse_time", &WorldDef::collapse_time)
-      .field("cell_size", &WorldDef::cell_size);
+      .field("cell_size", &WorldDef::cell_size)
+      .field("gravity", &WorldDef::gravity)
+      .field("rest_height", &WorldDef::rest_height);
   value_object<LatticeFilling>("LatticeFilling")
       .field("count", &LatticeFilling::count)
       .field("packing_fraction", &LatticeFilling::packing_fraction)
@@ -129,14 +145,18 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("add_ball", &add_ball)
       .function("add_segment", &add_segment)
       .function("add_arc", &add_arc)
+      .function("remove_ball", &remove_ball)
       .function("fill_lattice", &fill)
       .function("step", &step)
       .function("scale_speeds", &scale_speeds)
+      .function("set_velocity", &set_velocity)
+      .function("set_gravity", &set_gravity)
       .function("ball_at", &ball_at)
       .function("hold", &hold)
       .function("drag_to", &drag_to)
       .function("release", &release)
       .function("position", &position)
+      .function("velocity", &velocity)
       .function("snapshot", &snapshot)
       .function("segments", &segments)
       .function("arcs", &arcs)
@@ -147,6 +167,7 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("last_step_contacts", &DrawnWorld::last_step_contacts)
       .function("time", &world_time)
       .function("kinetic_energy", &kinetic_energy)
+      .function("potential_energy", &potential_energy)
       .function("momentum", &momentum)
       .function("collision_count", &collision_count)
       .function("audit", &audit);

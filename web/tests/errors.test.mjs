@@ -36,7 +36,8 @@ test('a lattice too dense for its box says why', async () => {
     const {carom} = await import('./js/carom.js');
     const world = new carom.DrawnWorld({boundary: carom.Boundary.box, lower: {x: 0, y: 0},
                                         upper: {x: 10, y: 10}, restitution: 1,
-                                        collapse_time: 0, cell_size: 0});
+                                        collapse_time: 0, cell_size: 0,
+                                        gravity: {x: 0, y: 0}, rest_height: 1e-3});
     try {
       world.fill_lattice({count: 100, packing_fraction: 0.9, speed: 1, seed: 1});
     } catch (error) {

@@ -363,6 +363,9 @@ function report() {
     // Ten digits: for e = 1 the energy is conserved to rounding (about 10⁻¹³ relative), so
     // every digit shown must stay put.
     energy: num(world.kinetic_energy(), 10),
+    // Of gravity, in a scene file that sets it (0 otherwise): with the kinetic energy, the total
+    // that elastic contacts keep.
+    potential: num(world.potential_energy(), 10),
     momentum: vec(world.momentum(), 4),
     step_ms: mean(recent(stats.step)),
     draw_ms: mean(recent(stats.draw)),

@@ -25,7 +25,7 @@ const CUP = {center: {x: 80, y: 78}, radius: 12, start_angle: Math.PI, end_angle
 function boxWorld(carom, restitution) {
   return new carom.DrawnWorld({boundary: carom.Boundary.box, lower: {x: 0, y: 0},
                                upper: BOX_SIZE, restitution, collapse_time: COLLAPSE_TIME,
-                               cell_size: 0});
+                               cell_size: 0, gravity: {x: 0, y: 0}, rest_height: 1e-3});
 }
 
 // Builds with fill(world); a world left half-built by an error is freed, not leaked.

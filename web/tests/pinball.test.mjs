@@ -1,0 +1,91 @@
+// "Pinball": a launched ball goes up the lane, round the table and down the drain, never leaving
+// the table; the total energy (kinetic + potential, as the page shows them) never rises between
+// a launch and the next launch or drain; the space bar launches and Reset clears the table.
+import assert from 'node:assert/strict';
+import {after, before, test} from 'node:test';
+
+import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+
+// The ball drains after about 10 s of table time; a loaded machine gives fewer frames.
+const RUN_TIMEOUT_MS = 120000;
+
+let session;
+before(async () => { session = await openBrowser(); });
+after(async () => { await session?.close(); });
+
+function table(page) {
+  return page.evaluate(() => {
+    const p = window.caromPinball;
+    return {
+      balls: p.inPlay.map((i) => p.world.position(i)),
+      launched: p.launched,
+      drained: p.drained,
+      audit: p.world.audit(),
+      upper: p.table.upper,
+    };
+  });
+}
+
+test('a launched ball goes round the table, stays on it, loses energy only in bounces and drains',
+     {timeout: RUN_TIMEOUT_MS + 20000}, async () => {
+  const {page, problems} = await openPage(session, 'pinball.html');
+  await page.click('#launch');
+  let seen = await table(page);
+  assert.equal(seen.launched, 1);
+  let highest = 0;
+  const deadline = Date.now() + RUN_TIMEOUT_MS;
+  while (seen.drained === 0) {
+    assert.ok(Date.now() < deadline, 'the ball never drained');
+    assert.equal(seen.audit, '');
+    for (const b of seen.balls) {
+      assert.ok(b.x > 0 && b.x < seen.upper.x && b.y > 0 && b.y < seen.upper.y,
+                `a ball at (${b.x}, ${b.y}) is off the table`);
+      highest = Math.max(highest, b.y);
+    }
+    if (highest > 30 && seen.balls.length) {
+      await page.screenshot({path: `${OUTPUT}/pinball-running.png`});
+    }
+    await page.waitForTimeout(100);
+    seen = await table(page);
+  }
+  assert.ok(highest > 25, `the ball went up the lane and round the top: highest ${highest}`);
+  assert.equal(seen.balls.length, 0);
+  // Between the launch and the drain the total can only fall: every bounce has restitution 0.8,
+  // and carom keeps kinetic + potential energy along every flight and slide.
+  const log = await page.evaluate(() => window.caromPinball.energyLog);
+  let compared = 0;
+  for (let k = 1; k < log.length; ++k) {
+    const [a, b] = [log[k - 1], log[k]];
+    if (a.launched !== b.launched || a.drained !== b.drained) continue;
+    assert.ok(b.total <= a.total + 1e-9 * Math.abs(a.total),
+              `the total energy rose from ${a.total} to ${b.total} at t = ${b.time}`);
+    ++compared;
+  }
+  assert.ok(compared > 100, `${compared} frames compared`);
+  await page.waitForTimeout(200);
+  assert.equal(await readout(page, 'drained'), '1');
+  assert.equal(await readout(page, 'in_play'), '0');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the space bar launches, the readout adds up, and Reset clears the table', async () => {
+  const {page, problems} = await openPage(session, 'pinball.html');
+  await page.keyboard.press('Space');
+  await page.waitForTimeout(400);
+  // In one go: the readout changes every few frames.
+  const texts = await page.evaluate(() => Object.fromEntries(
+      [...document.querySelectorAll('[data-readout]')].map((e) => [e.dataset.readout,
+                                                                  e.textContent])));
+  assert.equal(texts.launched, '1');
+  assert.equal(texts.in_play, '1');
+  const total = Number(texts.kinetic) + Number(texts.potential);
+  assert.ok(Math.abs(Number(texts.total) - total) < 1e-5 * Math.abs(total), JSON.stringify(texts));
+  assert.ok(Number(texts.potential) > 0, 'a ball above the table\'s foot has potential energy');
+  await page.click('#reset');
+  await page.waitForTimeout(200);
+  assert.equal(await readout(page, 'in_play'), '0');
+  assert.equal(await readout(page, 'launched'), '0');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

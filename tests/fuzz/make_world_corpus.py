@@ -90,13 +90,13 @@ SEEDS = {
     + bad(4, b"\x01") + bytes([REMOVE, 1]) + bad(5, b"\x00") + gas(2) + bytes([VELOCITY, 0]) + velocity(4, 0.5)
     + step(2),
     # Under gravity: a pile settling in a box (balls resting on each other, woken by a removal and
-    # a thrown ball), slopes and a bowl, and an elastic gas in a periodic cell.
+    # a thrown ball), slopes and a bowl, and an elastic gas falling onto a floor in an open world.
     "gravity_pile_in_box": head(BOX, 3, gravity=True) + walls() + gas(18, 1) + step(6) + step(7)
     + bytes([SAVE]) + bytes([REMOVE, 2]) + step(4) + add(10, 18, 4, 0.75) + step(7),
     "gravity_slopes_and_bowl": head(BOX, 4, gravity=True)
     + walls(segment((1, 12), (12, 6)), segment((19, 9), (8, 3)), arc((10, 8), 5.0, 0.5, 5) + word(0.5))
     + gas(10, 1) + step(6) + bytes([STOP, 1]) + step(7) + bytes([SAVE]) + step(7),
-    "gravity_elastic_periodic": head(PERIODIC, 0, gravity=True) + gas(12, 2) + collisions(8)
+    "gravity_elastic_open": head(OPEN, 0, gravity=True) + walls(segment((1, 1), (19, 1))) + gas(12, 2) + collisions(8)
     + bytes([SAVE]) + step(4),
 }
 

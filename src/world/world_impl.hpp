@@ -110,8 +110,10 @@ struct World::Impl : detail::BallStore {
   // By slot, how gravity carries each ball (carriage.hpp): sized with the slots while gravity is
   // on, empty otherwise.
   std::vector<detail::Carriage> carriages;
-  double jam_time = -std::numeric_limits<double>::infinity();  // (jammed)
-  std::uint32_t jam_count = 0;
+  // (jammed) The instant of the latest slow contact, and the handles of the balls in slow
+  // contacts at it.
+  double jam_time = -std::numeric_limits<double>::infinity();
+  std::vector<std::uint32_t> jam_balls;
 
   // ---- handles ----
   // The slot of the live ball `id` names; throws InvalidArgument (naming `function`) for a null
@@ -253,10 +255,16 @@ struct World::Impl : detail::BallStore {
   // own support); false, changing nothing, where `only_slow` and either is faster than its rest
   // speed.
   bool hold_each_other(std::uint32_t i, std::uint32_t j, bool only_slow);
+  // A jam of free balls in flight: i, j and the free balls touching them, transitively, move on
+  // at their centre of mass's velocity. False (and nothing changed) where one of them touches a
+  // ball that is not free, so that the jam stands on something.
+  bool move_together(std::uint32_t i, std::uint32_t j, double t);
   // Whether every support a carried ball lists can still carry it.
   [[nodiscard]] bool supports_hold(std::uint32_t ball) const;
-  // Counts a contact without approach at t; true once there have been too many at one instant.
-  bool jammed(double t);
+  // Counts a slow contact of balls i and j (j = i: of i with a wall) at t: true when an
+  // inelastic one meets a ball already in a slow contact at this instant (a press handed back
+  // and forth), or when there have been too many at one instant.
+  bool jammed(double t, std::uint32_t i, std::uint32_t j, bool inelastic);
   bool process_under_gravity(const detail::Event& event);
   bool resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, double t);
   bool resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall, double t);

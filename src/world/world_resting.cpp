@@ -36,10 +36,11 @@ constexpr double kLevel = 0x1p-40;
 // An elastic contact rests a ball only when it leaves its support slower than this fraction of
 // the rest speed: the rounding of a touch, never a bounce.
 constexpr double kElasticRest = 0x1p-26;
-// Slow contacts (below the rest speed) at one instant beyond which the balls pressed together
-// rest as a jam. A settling pile hands a press on through a few balls at once; this many is a
-// cycle. (A fast impact handed on through a pile is no jam: its contacts are not counted.)
-constexpr std::uint32_t kJamContacts = 256;
+// Balls in slow contacts (below the rest speed) at one instant beyond which the balls pressed
+// together rest as a jam. A settling pile hands a press on through a few balls at once; this
+// many is a cycle. (A fast impact handed on through a pile is no jam: its contacts are not
+// counted.)
+constexpr std::size_t kJamContacts = 256;
 
 Vec2 without_part_along(Vec2 v, Vec2 unit) { return v - unit * dot(v, unit); }
 
@@ -145,8 +146,9 @@ void World::Impl::settle(std::uint32_t ball, std::uint32_t support, Vec2 normal,
       other_normal = normalized(toward);
     }
   }
-  if (other_support != support && dot(b.velocity, other_normal) >= 0.0) {
-    // Pinned between the two (not moving off the old one): it slides on one whose slope leads
+  if (other_support != support && dot(b.velocity, other_normal) >= -slow) {
+    // Pinned between the two (not moving off the old one faster than the rest speed: a slide
+    // along a curved support leaves it a little at its tangent): it slides on one whose slope leads
     // away from the other, and rests where each slope leads into the other (gravity then lies
     // between the normals).
     if (dot(without_part_along(g, normal), other_normal) > 0.0) {
@@ -293,6 +295,47 @@ bool World::Impl::hold_each_other(std::uint32_t i, std::uint32_t j, bool only_sl
   return true;
 }
 
+bool World::Impl::move_together(std::uint32_t i, std::uint32_t j, double t) {
+  // The limit of slow inelastic contacts handed back and forth through touching balls is one
+  // velocity for all (exactly so along a row): momentum is kept and kinetic energy only taken.
+  // Stopping them instead would leave them hanging in the air.
+  std::vector<std::uint32_t> group{i, j};
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const std::uint32_t member = group[k];
+    if (!movable(member) || carriages[member].state != Carried::free) return false;
+    if (group.size() > kJamContacts) return false;
+    bool grounded = false;
+    grid.for_each_neighbour(grid.cell_of_ball(member), [&](std::int32_t cell) {
+      for (std::int32_t n = grid.first_ball(cell); n != detail::kNoBall;
+           n = grid.next_ball(static_cast<std::uint32_t>(n))) {
+        const auto other = static_cast<std::uint32_t>(n);
+        if (std::find(group.begin(), group.end(), other) != group.end()) continue;
+        const double reach = radius_of(member) + radius_of(other);
+        const double gap =
+            length(minimum_image(position_at(other, t) - position_at(member, t))) - reach;
+        if (gap > def.rest_height * reach) continue;
+        if (!movable(other) || carriages[other].state != Carried::free) grounded = true;
+        group.push_back(other);
+      }
+    });
+    if (grounded) return false;
+  }
+  Vec2 momentum;
+  double mass = 0.0;
+  for (const std::uint32_t member : group) {
+    advance(member, t);
+    momentum += balls[member].velocity * species_of(member).mass;
+    mass += species_of(member).mass;
+  }
+  const Vec2 together = momentum / mass;
+  for (const std::uint32_t member : group) {
+    balls[member].velocity = together;
+    ++balls[member].version;
+  }
+  for (const std::uint32_t member : group) predict_under_gravity(member);
+  return true;
+}
+
 bool World::Impl::supports_hold(std::uint32_t ball) const {
   const Carriage& carriage = carriages[ball];
   const std::uint32_t me = handle_of[ball] | detail::kBallSupport;
@@ -316,13 +359,23 @@ bool World::Impl::supports_hold(std::uint32_t ball) const {
   return true;
 }
 
-bool World::Impl::jammed(double t) {
+bool World::Impl::jammed(double t, std::uint32_t i, std::uint32_t j, bool inelastic) {
   // (One instant to a few roundings of the clock: a cycle of contacts may creep by an ulp.)
   if (!(std::abs(t - jam_time) <= 0x1p-44 * std::abs(t))) {
     jam_time = t;
-    jam_count = 0;
+    jam_balls.clear();
   }
-  return ++jam_count > kJamContacts;
+  // A ball pressed between two others (or a ball and a wall) would pass the press back and forth
+  // infinitely often at this instant, each time slower by the restitution: the three are a jam.
+  // (Elastic contacts hand a press on and end by themselves: a row of touching balls hit slowly
+  // passes the hit along once.)
+  const auto seen = [&](std::uint32_t ball) {
+    return std::find(jam_balls.begin(), jam_balls.end(), handle_of[ball]) != jam_balls.end();
+  };
+  if (inelastic && (seen(i) || seen(j))) return true;
+  jam_balls.push_back(handle_of[i]);
+  if (j != i) jam_balls.push_back(handle_of[j]);
+  return jam_balls.size() > kJamContacts;
 }
 
 bool World::Impl::process_under_gravity(const Event& event) {
@@ -398,7 +451,7 @@ bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall
       record(contact);
     }
   }
-  if (movable_ball && now.hit && approach <= rest_speed(i) && jammed(t)) {
+  if (movable_ball && now.hit && approach <= rest_speed(i) && jammed(t, i, i, restitution < 1.0)) {
     // (A jam against a wall, as in resolve_pair_under_gravity.)
     wake_carried(i);
     carriages[i] = Carriage{};
@@ -462,9 +515,12 @@ bool World::Impl::resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, d
     predict_under_gravity(j);
     return false;
   }
-  if (approach <= std::min(rest_speed(i), rest_speed(j)) && jammed(t)) {
+  if (approach <= std::min(rest_speed(i), rest_speed(j)) &&
+      jammed(t, i, j, pair_restitution(i, j, t) < 1.0)) {
     // Slow contacts that keep handing a press on at one instant: a jam of several balls (the
-    // engine solves no chains of contact forces). It rests as it stands.
+    // engine solves no chains of contact forces). In flight the balls move on together; on a
+    // support, it rests as it stands.
+    if (move_together(i, j, t)) return false;
     hold_each_other(i, j, false);
     ++a.version;
     ++b.version;
@@ -483,6 +539,9 @@ bool World::Impl::resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, d
     if (carriages[ball].acceleration != Vec2{} || length(balls[ball].velocity) > rest_speed(ball))
       return;
     wake_carried(ball);
+    // (A ball that carried its own support, through a ring of balls holding each other up, fell
+    // with the ring.)
+    if (carriages[ball].state != Carried::sliding) return;
     carriages[ball].state = Carried::resting;
     balls[ball].velocity = {};
     ++balls[ball].version;

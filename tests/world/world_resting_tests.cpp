@@ -208,6 +208,47 @@ TEST(WorldResting, TurningGravityWakesRestingBalls) {
   EXPECT_EQ(world.velocity(ball), (Vec2{}));
 }
 
+// Three balls touching in a row in the air, the outer two thrown at each other at `speed`.
+World row_in_flight(double restitution, double speed) {
+  World world(box_under_gravity({20.0, 10.0}, restitution));
+  world.add_ball(resting_test_ball({3.0, 5.0}, 1.0, {speed, 0.0}));
+  world.add_ball(resting_test_ball({5.0, 5.0}, 1.0));
+  world.add_ball(resting_test_ball({7.0, 5.0}, 1.0, {-speed, 0.0}));
+  return world;
+}
+
+TEST(WorldResting, SlowInelasticPressInFlightMovesTheBallsOnTogether) {
+  // Below the rest speed (√(2·g·10⁻³·r) ≈ 0.14) the middle ball would pass the press back and
+  // forth, each time half as fast, until the approach is lost to rounding: a ball in a second
+  // slow contact at one instant makes a jam, and in flight the touching balls move on at their
+  // centre of mass's velocity (they neither hang in the air nor gain energy).
+  World world = row_in_flight(0.5, 0.1);
+  const double before = resting_total_energy(world);
+  world.step(0.5);
+  EXPECT_LE(world.collision_count(), 3U);
+  EXPECT_LE(resting_total_energy(world), before);
+  const std::vector<BallId> ids = world.balls();
+  for (const BallId id : ids) {
+    EXPECT_EQ(world.velocity(id), world.velocity(ids[0]));
+    EXPECT_LT(world.position(id).y, 4.0);  // fallen ½·g·t² ≈ 1.23
+  }
+  EXPECT_EQ(world.velocity(ids[0]).x, 0.0);  // the row's momentum
+  EXPECT_FALSE(world.audit());
+}
+
+TEST(WorldResting, SlowElasticHitsInFlightBounceAsEver) {
+  // Elastic contacts are no jam: the hits pass through the row and out, energy kept.
+  World world = row_in_flight(1.0, 0.1);
+  const double before = resting_total_energy(world);
+  world.step(0.5);
+  EXPECT_EQ(world.collision_count(), 3U);
+  const std::vector<BallId> ids = world.balls();
+  EXPECT_DOUBLE_EQ(world.velocity(ids[0]).x, -0.1);
+  EXPECT_EQ(world.velocity(ids[1]).x, 0.0);
+  EXPECT_DOUBLE_EQ(world.velocity(ids[2]).x, 0.1);
+  EXPECT_NEAR(resting_total_energy(world), before, 1e-12 * std::abs(before));
+}
+
 std::vector<std::uint64_t> state_of(const World& world) {
   std::vector<std::uint64_t> out{std::bit_cast<std::uint64_t>(world.time()),
                                  world.collision_count()};

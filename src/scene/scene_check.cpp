@@ -1,6 +1,7 @@
 #include "scene_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
@@ -219,45 +220,85 @@ void separate_touching(const Scene& scene, std::vector<SceneBall>& balls) {
   // Moving a ball out by twice its overlap (plus a few ulps of the reach) leaves it clear of the
   // one it touched whatever the rounding of the move itself.
   constexpr double kUlps = 8.0 * std::numeric_limits<double>::epsilon();
+  const Vec2 lower = scene.world.lower;
+  const Vec2 upper = scene.world.upper;
+  const std::array<Segment, 4> box_sides{
+      Segment{lower, {upper.x, lower.y}}, Segment{{upper.x, lower.y}, upper},
+      Segment{upper, {lower.x, upper.y}}, Segment{{lower.x, upper.y}, lower}};
   const auto push = [&](SceneBall& ball, Vec2 away, double overlap, double reach) {
     const Vec2 direction = normalized(away);
     if (direction == Vec2{}) return;
-    ball.position += direction * (2.0 * overlap + kUlps * reach);
+    ball.position += direction * (2.0 * std::max(overlap, 0.0) + kUlps * reach);
   };
-  for (SceneBall& ball : balls) {
-    if (scene.world.boundary == Boundary::box) {
-      const double r = ball.radius;
-      const Vec2 lo = scene.world.lower + Vec2{r, r};
-      const Vec2 hi = scene.world.upper - Vec2{r, r};
-      ball.position.x = std::clamp(ball.position.x, lo.x, hi.x);
-      ball.position.y = std::clamp(ball.position.y, lo.y, hi.y);
+  // A push can move a ball onto another one or into a wall (in a settled pile every ball
+  // touches several): passes repeat, with the world's own test of an overlap, until none is
+  // left. The first pass also pushes exact touches, as the world's contacts need a gap.
+  constexpr int kPasses = 64;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const bool first = pass == 0;
+    const auto overlapping = [&](Vec2 away, double reach) {
+      return first ? reach - length(away) >= 0.0 : length_squared(away) < reach * reach;
+    };
+    // Clear of the box and the walls; whether the ball moved.
+    const auto clear_of_walls = [&](SceneBall& ball) {
+      const Vec2 before = ball.position;
+      if (scene.world.boundary == Boundary::box) {
+        const double r = ball.radius;
+        const Vec2 lo = scene.world.lower + Vec2{r, r};
+        const Vec2 hi = scene.world.upper - Vec2{r, r};
+        ball.position.x = std::clamp(ball.position.x, lo.x, hi.x);
+        ball.position.y = std::clamp(ball.position.y, lo.y, hi.y);
+        // (The world takes the box's sides for walls, with its own test of a touch, which a
+        // ball clamped to the side can fail by a rounding.)
+        for (const Segment& side : box_sides) {
+          const Vec2 away = ball.position - carom::nearest_point(side, ball.position);
+          if (!first && overlapping(away, r)) push(ball, away, r - length(away), r);
+        }
+      }
+      for (const SceneWall& wall : walls) {
+        const Vec2 nearest = std::visit(
+            [&](const auto& shape) { return carom::nearest_point(shape, ball.position); },
+            wall.shape);
+        const Vec2 away = ball.position - nearest;
+        if (overlapping(away, ball.radius))
+          push(ball, away, ball.radius - length(away), ball.radius);
+      }
+      return ball.position != before;
+    };
+    bool pushed = false;
+    for (SceneBall& ball : balls) pushed = clear_of_walls(ball) || pushed;
+    BallGrid grid(2.0 * largest, cell);
+    std::vector<Vec2> centres;
+    std::vector<double> radii;
+    const std::size_t pockets = scene.pockets.size();
+    for (const ScenePocket& p : scene.pockets) {
+      grid.insert(centres.size(), p.position);
+      centres.push_back(p.position);
+      radii.push_back(p.radius);
     }
-    for (const SceneWall& wall : walls) {
-      const Vec2 nearest =
-          std::visit([&](const auto& shape) { return carom::nearest_point(shape, ball.position); },
-                     wall.shape);
-      const double overlap = ball.radius - distance(nearest, ball.position);
-      if (overlap >= 0.0) push(ball, ball.position - nearest, overlap, ball.radius);
+    for (SceneBall& ball : balls) {
+      grid.for_each_near(ball.position, [&](std::size_t j) {
+        const Vec2 away = grid.offset(centres[j], ball.position);
+        const double reach = ball.radius + radii[j];
+        if (!overlapping(away, reach)) return;
+        pushed = true;
+        if (pass == 0 || j < pockets) {
+          push(ball, away, reach - length(away), reach);
+          return;
+        }
+        // Later passes part both balls, each by the overlap: pushing only the later one can
+        // press it back into what it pushed before (a ball between a floor and one above it).
+        SceneBall& other = balls[j - pockets];
+        const double overlap = 0.5 * (reach - length(away));
+        push(ball, away, overlap, reach);
+        push(other, -away, overlap, reach);
+        centres[j] = other.position;
+      });
+      grid.insert(centres.size(), ball.position);
+      centres.push_back(ball.position);
+      radii.push_back(ball.radius);
     }
-  }
-  BallGrid grid(2.0 * largest, cell);
-  std::vector<Vec2> centres;
-  std::vector<double> radii;
-  for (const ScenePocket& p : scene.pockets) {
-    grid.insert(centres.size(), p.position);
-    centres.push_back(p.position);
-    radii.push_back(p.radius);
-  }
-  for (SceneBall& ball : balls) {
-    grid.for_each_near(ball.position, [&](std::size_t j) {
-      const Vec2 away = grid.offset(centres[j], ball.position);
-      const double reach = ball.radius + radii[j];
-      const double overlap = reach - length(away);
-      if (overlap >= 0.0) push(ball, away, overlap, reach);
-    });
-    grid.insert(centres.size(), ball.position);
-    centres.push_back(ball.position);
-    radii.push_back(ball.radius);
+    if (!pushed) return;
   }
 }
 

@@ -27,7 +27,8 @@ class PathedSceneError : public SceneError {
 inline constexpr double kRoundingOverlap = 1e-9;
 
 // Moves each ball that overlaps a wall, a box edge, a pocket or an earlier ball by no more than a
-// rounding (as accepted above) clear of it, by twice the overlap: the world refuses any overlap,
+// rounding (as accepted above) clear of it, by twice the overlap, and again while a move left it
+// on another (a settled pile saved by `carom run --save`): the world refuses any overlap,
 // however small. Balls that do not touch anything are not moved, so scenes written by hand keep
 // their positions exactly.
 void separate_touching(const Scene& scene, std::vector<SceneBall>& balls);

@@ -142,6 +142,35 @@ TEST(SceneWorld, OverlapsOfARoundingAreTouchingAndGetSeparated) {
                SceneError);
 }
 
+TEST(SceneWorld, ASettledPileSavedAsASceneLoadsBack) {
+  // Every ball of a settled pile touches several others, the floor or a side to a rounding:
+  // moving one clear of one pair moves it onto another, so separation repeats until none is left.
+  std::string balls;
+  for (int i = 0; i < 120; ++i) {
+    if (i > 0) balls += ",";
+    balls += "{\"position\": [" + std::to_string(1.0 + 2.0 * (i % 9) + 0.3 * (i / 9 % 2)) + ", " +
+             std::to_string(1.5 + 2.0 * (i / 9)) +
+             "], \"radius\": " + std::to_string(0.5 + 0.1 * (i % 3)) + "}";
+  }
+  const Scene scene = parse_scene(
+      R"({"world": {"boundary": "box", "lower": [0, 0], "upper": [20, 60], "restitution": 0.5,
+                    "gravity": [0, -9.81]}, "balls": [)" +
+      balls + "]}");
+  SceneWorld poured = make_world(scene);
+  run_scene_until(poured, 15.0);
+  const Scene saved = parse_scene(to_json_text(capture_scene(poured)));
+  SceneWorld loaded = make_world(saved);
+  EXPECT_EQ(loaded.world.ball_count(), 120U);
+  EXPECT_FALSE(loaded.world.audit(0.0).has_value());
+  // Moved by roundings only.
+  for (std::size_t i = 0; i < 120; ++i) {
+    EXPECT_NEAR(loaded.world.position(loaded.balls[i]).x, poured.world.position(poured.balls[i]).x,
+                1e-12);
+    EXPECT_NEAR(loaded.world.position(loaded.balls[i]).y, poured.world.position(poured.balls[i]).y,
+                1e-12);
+  }
+}
+
 // The scene's gravity is the world's, and the summary's potential energy is the world's: −Σ m·g·p
 // over movable balls (the immovable ball and the pocket do not count).
 TEST(SceneWorld, GravityReachesTheWorldAndTheSummary) {

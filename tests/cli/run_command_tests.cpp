@@ -292,6 +292,22 @@ TEST(InfoCommand, GravityIsNamedWithTheEnergyItHolds) {
             stats["kinetic_energy"].get<double>() + stats["potential_energy"].get<double>());
 }
 
+TEST(InfoCommand, ARestHeightSetInTheSceneIsNamed) {
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "rest.json", R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [10, 10], "gravity": [0, -1],
+              "rest_height": 0.01},
+    "balls": [{"position": [5, 5]}]})");
+  const ToolRun text = run_carom({"info", scene});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("gravity (0, -1), rest height 0.01 radii\n"));
+  const ToolRun as_json = run_carom({"info", scene, "--json"});
+  ASSERT_EQ(as_json.exit_code, 0) << as_json.err;
+  EXPECT_EQ(nlohmann::json::parse(as_json.out)["rest_height"].get<double>(), 0.01);
+  // The default is left out of the text.
+  EXPECT_THAT(run_carom({"info", example("gravity-drop.json")}).out, Not(HasSubstr("rest height")));
+}
+
 TEST(InfoCommand, WithoutGravityTheTextNamesNone) {
   const ToolRun text = run_carom({"info", example("newtons-cradle.json")});
   ASSERT_EQ(text.exit_code, 0) << text.err;

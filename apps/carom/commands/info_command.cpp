@@ -53,6 +53,7 @@ int run(const InfoOptions& options) {
     json["potential_energy"] = s.potential_energy;
     json["total_energy"] = s.kinetic_energy + s.potential_energy;
     json["gravity"] = {scene.world.gravity.x, scene.world.gravity.y};
+    json["rest_height"] = scene.world.rest_height;
     json["momentum"] = {s.momentum.x, s.momentum.y};
     if (s.smallest_gap) {
       json["smallest_gap"] = {
@@ -72,7 +73,11 @@ int run(const InfoOptions& options) {
   const bool gravity = scene.world.gravity != Vec2{};
   text += "world             " + boundary_text(scene.world) + ", restitution " +
           readable(scene.world.restitution) +
-          (gravity ? ", gravity " + readable(scene.world.gravity) : "") + "\n";
+          (gravity ? ", gravity " + readable(scene.world.gravity) : "") +
+          (gravity && scene.world.rest_height != WorldDef{}.rest_height
+               ? ", rest height " + readable(scene.world.rest_height) + " radii"
+               : "") +
+          "\n";
   text += "time              " + readable(scene.time) + "\n";
   text += "balls             " + std::to_string(s.balls) + " (" + std::to_string(generated) +
           " generated, " + std::to_string(s.immovable) + " immovable)\n";

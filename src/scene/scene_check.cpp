@@ -67,6 +67,38 @@ void check_names(const Scene& scene) {
   for (std::size_t i = 0; i < scene.pockets.size(); ++i) {
     note(scene.pockets[i].name, {std::string("pockets"), i});
   }
+  // A generator names its balls NAME#0, NAME#1, ...: two generators of one name, or a ball
+  // named like one of its balls, would give two balls one name (and a saved scene that does
+  // not load).
+  std::unordered_map<std::string, std::size_t> generator_of;
+  for (std::size_t g = 0; g < scene.generators.size(); ++g) {
+    const std::optional<std::string>& name = scene.generators[g].name;
+    if (!name) continue;
+    const auto [it, added] = generator_of.emplace(*name, g);
+    if (!added) {
+      throw PathedSceneError(
+          {std::string("generators"), g, std::string("name")}, "\"" + *name + "\"",
+          "the name is taken already by generators[" + std::to_string(it->second) + "]");
+    }
+  }
+  for (const auto& [name, path] : seen) {
+    const std::size_t mark = name.rfind('#');
+    if (mark == std::string::npos) continue;
+    const auto generator = generator_of.find(name.substr(0, mark));
+    if (generator == generator_of.end()) continue;
+    const std::string index = name.substr(mark + 1);
+    const bool digits =
+        !index.empty() && index.size() <= 19 &&
+        std::all_of(index.begin(), index.end(), [](char c) { return c >= '0' && c <= '9'; });
+    // (Exactly as the generator writes it: no leading zeros.)
+    if (!digits || (index.size() > 1 && index[0] == '0')) continue;
+    if (std::stoull(index) >= scene.generators[generator->second].count) continue;
+    JsonPath where = path;
+    where.emplace_back(std::string("name"));
+    throw PathedSceneError(where, "\"" + name + "\"",
+                           "the name is taken already by generators[" +
+                               std::to_string(generator->second) + "]'s ball " + index);
+  }
 }
 
 void check_inside_box(const Scene& scene, const std::vector<SceneBall>& balls,

@@ -276,6 +276,29 @@ TEST(SceneErrors, DuplicateNames) {
   EXPECT_THAT(d.problem, HasSubstr("taken already by balls[0]"));
 }
 
+TEST(SceneErrors, GeneratedNamesMayNotRepeat) {
+  // A generator names its balls NAME#i: two generators of one name, or a ball named like a
+  // generated one, would give two balls one name, and the saved scene would not load.
+  const std::string generator =
+      R"({"name": "a", "count": 3, "radius": 1, "region": {"lower": [0, 0], "upper": [50, 50]}})";
+  const auto twice = error_of(R"({"generators": [)" + generator + ", " + generator + "]}");
+  EXPECT_EQ(twice.path, "generators[1].name");
+  EXPECT_THAT(twice.problem, HasSubstr("taken already by generators[0]"));
+  const auto ball = error_of(R"({"balls": [{"name": "a#2", "position": [60, 60]}],
+                                "generators": [)" +
+                             generator + "]}");
+  EXPECT_EQ(ball.path, "balls[0].name");
+  EXPECT_THAT(ball.problem, HasSubstr("taken already by generators[0]'s ball 2"));
+  // Names the generator does not write are free: past its count, or with a leading zero.
+  for (const char* free : {"a#3", "a#02", "a#", "a#x", "b#0"}) {
+    EXPECT_NO_THROW(static_cast<void>(parse_scene(R"({"balls": [{"name": ")" + std::string(free) +
+                                                  R"(", "position": [60, 60]}],
+                                "generators": [)" +
+                                                  generator + "]}")))
+        << free;
+  }
+}
+
 TEST(SceneErrors, MissingField) {
   const auto d = error_of("{\"balls\": [{\"radius\": 1}]}");
   EXPECT_EQ(d.path, "balls[0].position");

@@ -147,6 +147,28 @@ TEST(RenderSvg, AnOpenWorldsTrailsFitTheView) {
   }
 }
 
+// Under gravity a trail follows the parabola, not the chord from where the ball was to where it
+// is: a ball thrown level at 1 with g = 2 is at (t, −t²); half way the chord from (0, 0) to
+// (1, −1) lies 0.125 of its length from the path.
+TEST(RenderSvg, TrailsUnderGravityFollowTheParabola) {
+  const ScratchDir dir;
+  const std::string scene = write_test_scene(dir, "throw.json", R"({
+    "world": {"gravity": [0, -2]},
+    "balls": [{"position": [0, 0], "velocity": [1, 0], "radius": 0.05}]})");
+  const ToolRun run = run_render(
+      {"render", scene, "--at", "1", "--trails", "1", "--out", (dir / "throw.svg").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<Vec2> points = polyline_vertices(read_file(dir / "throw.svg"));
+  ASSERT_GE(points.size(), 65U);
+  const Vec2 chord = points.back() - points.front();
+  double farthest = 0.0;
+  for (const Vec2 p : points) {
+    const Vec2 d = p - points.front();
+    farthest = std::max(farthest, std::abs(d.x * chord.y - d.y * chord.x) / length(chord));
+  }
+  EXPECT_NEAR(farthest / length(chord), 0.125, 0.002);
+}
+
 // --view: the panel shows that box, 640 pixels on its longer side, cut at its edge.
 TEST(RenderSvg, ViewIsTheClippedPanel) {
   const ScratchDir dir;

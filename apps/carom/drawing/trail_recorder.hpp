@@ -1,8 +1,10 @@
 // carom tool: where each ball has been lately, for the trails `carom render --trails` draws.
 //
 // Between contacts a ball moves in a straight line, so its path is exactly the polyline through
-// its centre at each of its contacts, plus where it was at the start and where it is now. The
-// recorder keeps those points for the last `seconds` of scene time.
+// its centre at each of its contacts, plus where it was at the start and where it is now. Under
+// gravity it flies on parabolas, and the callers record it at many times between too (frames, or
+// even pieces of the window). The recorder keeps those points for the last `seconds` of scene
+// time.
 #pragma once
 
 #include <cstddef>

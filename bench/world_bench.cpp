@@ -3,6 +3,8 @@
 //   scene of `carom bench` (carom/science/hard_disk_gas.hpp), at N = 10⁴ and 10⁵ and packing
 //   fractions 0.3 and 0.6. N = 10⁶ takes minutes (its setup alone is about 15 s), so it is
 //   registered only when the environment variable CAROM_BENCH_WORLD_LARGE is set (to anything).
+// - BM_WorldGasInABox: the same disks, elastic, in a closed box, with and without gravity (a
+//   scale height kT/(m·g) of half the box's side): what gravity's parabolas cost a collision.
 // - BM_WorldGameStep: a game's frame, 10⁴ balls of mixed sizes in a closed box stepped at 60
 //   steps per second; the mean step time and the worst.
 // - BM_WorldGameDragStep: the same with the player dragging one ball every frame (set_position
@@ -17,6 +19,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -91,6 +94,74 @@ void gas_sizes(benchmark::internal::Benchmark* registered) {
   }
 }
 BENCHMARK(BM_WorldHardDisks)->Apply(gas_sizes)->Unit(benchmark::kMillisecond);
+
+// ---- a gas under gravity -------------------------------------------------------------------
+
+// N disks of diameter 1 and mass 1 on a square lattice in a closed square box of packing fraction
+// η, velocity components normal with standard deviation 1 (kT = 1), elastic; with gravity g down
+// of a scale height kT/(m·g) of half the side, so that the gas stays a gas, denser below. The
+// same disks without gravity are the pair's other half.
+struct CachedBoxGas {
+  std::int64_t key = -1;
+  std::unique_ptr<World> world;
+};
+
+World* box_gas(std::uint64_t n, std::int64_t eta_percent, bool gravity) {
+  static CachedBoxGas cached;
+  const std::int64_t key =
+      static_cast<std::int64_t>(n) * 1000 + eta_percent * 10 + (gravity ? 1 : 0);
+  if (cached.world && cached.key == key) return cached.world.get();
+  cached.world.reset();
+  const double eta = static_cast<double>(eta_percent) / 100.0;
+  const double side = std::sqrt(static_cast<double>(n) * std::numbers::pi / 4.0 / eta);
+  const auto per_row = static_cast<std::uint64_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const double spacing = side / static_cast<double>(per_row);
+  if (spacing <= 1.0) return nullptr;
+  WorldDef def{Boundary::box, {0.0, 0.0}, {side, side}, 1.0};
+  if (gravity) def.gravity = {0.0, -2.0 / side};
+  auto world = std::make_unique<World>(def);
+  std::mt19937_64 random(kGasSeed);
+  std::normal_distribution<double> speed(0.0, 1.0);
+  for (std::uint64_t i = 0; i < n; ++i) {
+    BallDef ball;
+    ball.position = {(static_cast<double>(i % per_row) + 0.5) * spacing,
+                     (static_cast<double>(i / per_row) + 0.5) * spacing};
+    ball.radius = 0.5;
+    const double vx = speed(random);
+    const double vy = speed(random);
+    ball.velocity = {vx, vy};
+    world->add_ball(ball);
+  }
+  world->set_contact_recording(false);
+  world->run_collisions(kEquilibrationPerBall * n);
+  cached.key = key;
+  cached.world = std::move(world);
+  return cached.world.get();
+}
+
+// One iteration resolves N collisions; items are collisions. energy_drift: the relative change
+// of the total energy (kinetic and potential) over the timed iterations.
+void BM_WorldGasInABox(benchmark::State& state) {
+  const auto n = static_cast<std::uint64_t>(state.range(0));
+  World* world = box_gas(n, state.range(1), state.range(2) != 0);
+  if (world == nullptr) {
+    state.SkipWithError("the lattice cannot hold this gas");
+    return;
+  }
+  const double energy_before = world->kinetic_energy() + world->potential_energy();
+  std::uint64_t collisions = 0;
+  for (auto _ : state) collisions += world->run_collisions(n);
+  state.SetItemsProcessed(static_cast<std::int64_t>(collisions));
+  state.counters["energy_drift"] =
+      (world->kinetic_energy() + world->potential_energy() - energy_before) / energy_before;
+}
+BENCHMARK(BM_WorldGasInABox)
+    ->ArgNames({"n", "eta_percent", "gravity"})
+    ->Args({10'000, 2, 0})
+    ->Args({10'000, 2, 1})
+    ->Args({10'000, 35, 0})
+    ->Args({10'000, 35, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // ---- a game's frame -----------------------------------------------------------------------
 

@@ -83,14 +83,17 @@ struct Impact {
 // ---- under a constant acceleration -----------------------------------------------------------
 
 // A ball's motion under a constant acceleration (gravity, say): its centre at time t is
-// center + velocity·t + ½·acceleration·t², and its velocity velocity + acceleration·t.
+// center + velocity·t + ½·acceleration·t², and its velocity velocity + acceleration·t. A ball
+// may also grow: its radius at time t is radius + growth·t (growth >= 0, length per time unit;
+// compression of a packing, say).
 // (A constructor rather than an aggregate: braces such as {1.0, 2.0} or {} then still name a
 // velocity, never a Motion, in calls of the straight-line queries.)
 struct Motion {
-  constexpr Motion(Vec2 velocity_, Vec2 acceleration_) noexcept
-      : velocity(velocity_), acceleration(acceleration_) {}
+  constexpr Motion(Vec2 velocity_, Vec2 acceleration_, double growth_ = 0.0) noexcept
+      : velocity(velocity_), acceleration(acceleration_), growth(growth_) {}
   Vec2 velocity;
   Vec2 acceleration;
+  double growth = 0.0;
 };
 
 // The time form for balls that accelerate. The gap is then a polynomial in time, of degree 2
@@ -109,7 +112,15 @@ struct Motion {
 // two back before the gap has opened beyond its rounding is a hit where the gap turns to fall.
 // Velocities at the contact are velocity + acceleration·t.
 //
-// A zero acceleration (both, for two balls) gives exactly the answer of the straight-line query.
+// A growing ball's gap gains the terms of its radius: −2·r·growth·t − growth²·t² against a point,
+// a ball (with the sum of the two radii and of the two growths) or an arc's circle, −growth·t
+// against a segment's line; a contact counts when the gap closes, by motion or by growth (a
+// growing ball at rest touching a wall is in contact now). The normal speed at the contact is
+// then the approach along the normal plus the growth, which carom::bounce does not know of: the
+// world's response adds it.
+//
+// A zero acceleration and growth (both, for two balls) gives exactly the answer of the
+// straight-line query.
 // Magnitudes: any finite input is scaled by powers of two (lengths to about 1, then time so that
 // the velocity's and the acceleration's contributions are about 1), which changes no rounding;
 // terms more than 2^-1000 below the largest are lost.

@@ -51,6 +51,7 @@ struct Scale {
   }
   [[nodiscard]] double distance(double r) const { return std::ldexp(r, -length); }
   [[nodiscard]] Vec2 velocity(const Exact& v) const { return scaled(v.v, v.extra + time - length); }
+  [[nodiscard]] double speed(double v) const { return std::ldexp(v, time - length); }
   [[nodiscard]] Vec2 acceleration(const Exact& a) const {
     return scaled(a.v, a.extra + 2 * time - length);
   }
@@ -58,6 +59,7 @@ struct Scale {
   [[nodiscard]] double from_scaled_time(double t) const { return std::ldexp(t, time); }
 };
 
+// velocity: the larger of the velocity and a radius's growth, each a speed.
 Scale make_scale(int largest_length_exponent, const Exact& velocity, const Exact& acceleration) {
   Scale scale;
   scale.length = largest_length_exponent + 1;
@@ -72,6 +74,16 @@ Scale make_scale(int largest_length_exponent, const Exact& velocity, const Exact
   return scale;
 }
 
+// The speed that sets a problem's time scale: the velocity's, or a growth larger than it.
+Exact fastest(const Exact& velocity, double growth) {
+  if (growth == 0.0 ||
+      (velocity.v != Vec2{} && std::ldexp(std::max(std::abs(velocity.v.x), std::abs(velocity.v.y)),
+                                          velocity.extra) >= growth)) {
+    return velocity;
+  }
+  return {{growth, 0.0}, 0};
+}
+
 // A centre moving as s + u·t + ½·a·t² relative to a fixed point, in scaled units.
 struct Path {
   Vec2 s;
@@ -83,8 +95,9 @@ struct Path {
 
 double abs_dot(Vec2 x, Vec2 y) { return std::abs(x.x * y.x) + std::abs(x.y * y.y); }
 
-// |s + u·t + ½·a·t²|² − R²: positive while the centre is outside the circle of radius R.
-GapPolynomial outside_circle(const Path& path, double radius) {
+// |s + u·t + ½·a·t²|² − (R + g·t)²: positive while the centre is outside the circle of radius
+// R + g·t (g, a growth, 0 for a circle that keeps its size).
+GapPolynomial outside_circle(const Path& path, double radius, double growth = 0.0) {
   const Vec2 s = path.s;
   const Vec2 u = path.u;
   const Vec2 a = path.a;
@@ -99,12 +112,19 @@ GapPolynomial outside_circle(const Path& path, double radius) {
   p.weight[3] = abs_dot(u, a);
   p.c[4] = 0.25 * dot(a, a);
   p.weight[4] = p.c[4];
+  if (growth != 0.0) {
+    p.c[1] -= 2.0 * radius * growth;
+    p.weight[1] += 2.0 * std::abs(radius * growth);
+    p.c[2] -= growth * growth;
+    p.weight[2] += growth * growth;
+  }
   return p;
 }
 
-// R² − |s + u·t + ½·a·t²|²: positive while the centre is inside the circle of radius R.
-GapPolynomial inside_circle(const Path& path, double radius) {
-  GapPolynomial p = outside_circle(path, radius);
+// (R + g·t)² − |s + u·t + ½·a·t²|²: positive while the centre is inside the circle of radius
+// R + g·t.
+GapPolynomial inside_circle(const Path& path, double radius, double growth = 0.0) {
+  GapPolynomial p = outside_circle(path, radius, growth);
   for (double& c : p.c) c = -c;
   return p;
 }
@@ -136,11 +156,12 @@ class StaticQuery {
         motion_(motion),
         horizon_(horizon),
         scale_(make_scale(std::max(largest_length_exponent, exponent_of(ball.radius)),
-                          {motion.velocity, 0}, {motion.acceleration, 0})),
+                          fastest({motion.velocity, 0}, motion.growth), {motion.acceleration, 0})),
         u_(scale_.velocity({motion.velocity, 0})),
         a_(scale_.acceleration({motion.acceleration, 0})),
         scaled_horizon_(scale_.to_scaled_time(horizon)),
-        radius_(scale_.distance(ball.radius)) {}
+        radius_(scale_.distance(ball.radius)),
+        growth_(scale_.speed(motion.growth)) {}
 
   [[nodiscard]] Vec2 center_at(double t) const { return position_at(ball_.center, motion_, t); }
   // The path of the ball's centre relative to `origin`, scaled.
@@ -149,6 +170,7 @@ class StaticQuery {
   }
   [[nodiscard]] const Ball& ball() const { return ball_; }
   [[nodiscard]] double scaled_radius() const { return radius_; }
+  [[nodiscard]] double scaled_growth() const { return growth_; }
   [[nodiscard]] double distance(double r) const { return scale_.distance(r); }
   [[nodiscard]] Vec2 scaled_offset(Vec2 p, Vec2 q) const { return scale_.offset(p, q); }
 
@@ -166,7 +188,7 @@ class StaticQuery {
                         motion_.acceleration);
   }
   [[nodiscard]] bool moves() const {
-    return motion_.velocity != Vec2{} || motion_.acceleration != Vec2{};
+    return motion_.velocity != Vec2{} || motion_.acceleration != Vec2{} || motion_.growth != 0.0;
   }
 
   // The first contact with a fixed point.
@@ -177,7 +199,8 @@ class StaticQuery {
       if (moves()) keep_earliest(best, 0.0, point, heading_at(0.0));
       return;
     }
-    const GapClosings closings = this->closings(outside_circle(path, radius_), AtStart::counts);
+    const GapClosings closings =
+        this->closings(outside_circle(path, radius_, growth_), AtStart::counts);
     if (closings.count == 0) return;
     const double t = real_time(closings.t[0]);
     const Vec2 at = center_at(t);
@@ -193,6 +216,7 @@ class StaticQuery {
   Vec2 a_;
   double scaled_horizon_;
   double radius_;
+  double growth_;
 };
 
 Impact finish_static(const Ball& ball, const Motion& motion, Vec2 nearest, const Candidate& best) {
@@ -240,8 +264,8 @@ void segment_interior(const StaticQuery& query, const Segment& segment, Candidat
     GapPolynomial gap;
     gap.c[0] = facing * h - radius;
     gap.weight[0] = abs_dot(path.s, normal) + radius;
-    gap.c[1] = facing * dot(path.u, normal);
-    gap.weight[1] = abs_dot(path.u, normal);
+    gap.c[1] = facing * dot(path.u, normal) - query.scaled_growth();
+    gap.weight[1] = abs_dot(path.u, normal) + query.scaled_growth();
     gap.c[2] = facing * 0.5 * dot(path.a, normal);
     gap.weight[2] = 0.5 * abs_dot(path.a, normal);
     const GapClosings closings =
@@ -279,12 +303,15 @@ void arc_interior(const StaticQuery& query, const ArcFrame& arc, Candidate& best
     }
   };
   // (A start beyond a circle, on its other side, is no contact with the arc: `touching`.)
-  consider(query.closings(outside_circle(path, arc_radius + radius), AtStart::touching), 1.0);
+  const double growth = query.scaled_growth();
+  consider(query.closings(outside_circle(path, arc_radius + radius, growth), AtStart::touching),
+           1.0);
   const double inner = arc_radius - radius;
   if (inner > 0.0) {
-    consider(query.closings(inside_circle(path, inner), AtStart::touching), 1.0);
+    // (The inner circle shrinks as the ball grows.)
+    consider(query.closings(inside_circle(path, inner, -growth), AtStart::touching), 1.0);
   } else if (inner < 0.0) {
-    consider(query.closings(outside_circle(path, -inner), AtStart::touching), -1.0);
+    consider(query.closings(outside_circle(path, -inner, growth), AtStart::touching), -1.0);
   } else if (query.moves() && within_distance(path.s, std::ldexp(arc_radius, -40))) {
     // A ball exactly as large as the arc's circle, its centre on the arc's centre (or a rounding
     // off it): it fills the circle, and any motion presses it into the wall where it moves to.
@@ -352,13 +379,14 @@ Impact accelerated_ball_ball(const Ball& a, const Motion& motion_a, const Ball& 
   // Relative motion: A moves by the difference of the motions, B stands still.
   const Exact velocity = difference(motion_a.velocity, motion_b.velocity);
   const Exact acceleration = difference(motion_a.acceleration, motion_b.acceleration);
+  const double growth = motion_a.growth + motion_b.growth;
   const int length =
       std::max(offset_exponent(a.center, b.center), exponent_of(std::max(a.radius, b.radius)) + 1);
-  const Scale scale = make_scale(length, velocity, acceleration);
+  const Scale scale = make_scale(length, fastest(velocity, growth), acceleration);
   const Path path{scale.offset(a.center, b.center), scale.velocity(velocity),
                   scale.acceleration(acceleration)};
   const double reach = scale.distance(a.radius) + scale.distance(b.radius);
-  const bool moving = velocity.v != Vec2{} || acceleration.v != Vec2{};
+  const bool moving = velocity.v != Vec2{} || acceleration.v != Vec2{} || growth != 0.0;
   Impact out;
   out.overlapping = strictly_within_distance(path.s, reach);
   double scaled_t = 0.0;
@@ -366,8 +394,8 @@ Impact accelerated_ball_ball(const Ball& a, const Motion& motion_a, const Ball& 
     // Coincident centres: no line of centres and no side to separate to.
     out.hit = moving;
   } else {
-    const GapClosings closings =
-        gap_closings(outside_circle(path, reach), scale.to_scaled_time(horizon), AtStart::counts);
+    const GapClosings closings = gap_closings(outside_circle(path, reach, scale.speed(growth)),
+                                              scale.to_scaled_time(horizon), AtStart::counts);
     out.hit = closings.count > 0;
     if (out.hit) scaled_t = closings.t[0];
   }
@@ -376,7 +404,8 @@ Impact accelerated_ball_ball(const Ball& a, const Motion& motion_a, const Ball& 
   out.b_at = position_at(b.center, motion_b, out.t);
   const Vec2 at = path.at(scaled_t);  // A's centre from B's, scaled
   out.normal = direction_or(-at, -(path.u + path.a * scaled_t), -path.a);
-  const double share = a.radius / (a.radius + b.radius);
+  const double radius_a = a.radius + motion_a.growth * out.t;
+  const double share = radius_a / (radius_a + b.radius + motion_b.growth * out.t);
   const Vec2 between = out.b_at - out.a_at;
   out.point = is_finite(between) ? out.a_at + between * share : out.a_at + out.normal * a.radius;
   return out;
@@ -391,6 +420,8 @@ void validate_motion(const char* function, const Ball& a, const Motion& motion, 
   detail::require_positive(function, "a.radius", a.radius);
   detail::require_finite(function, "motion_a.velocity", motion.velocity);
   detail::require_finite(function, "motion_a.acceleration", motion.acceleration);
+  detail::require_finite(function, "motion_a.growth", motion.growth);
+  detail::require_non_negative(function, "motion_a.growth", motion.growth);
   detail::require_non_negative(function, "horizon", horizon);
 }
 
@@ -404,7 +435,10 @@ Impact time_of_impact_ball_ball(const Ball& a, const Motion& motion_a, const Bal
   detail::require_positive(kFunction, "b.radius", b.radius);
   detail::require_finite(kFunction, "motion_b.velocity", motion_b.velocity);
   detail::require_finite(kFunction, "motion_b.acceleration", motion_b.acceleration);
-  if (motion_a.acceleration == Vec2{} && motion_b.acceleration == Vec2{}) {
+  detail::require_finite(kFunction, "motion_b.growth", motion_b.growth);
+  detail::require_non_negative(kFunction, "motion_b.growth", motion_b.growth);
+  if (motion_a.acceleration == Vec2{} && motion_b.acceleration == Vec2{} &&
+      motion_a.growth == 0.0 && motion_b.growth == 0.0) {
     return time_of_impact_ball_ball(a, motion_a.velocity, b, motion_b.velocity, horizon);
   }
   return detail::accelerated_ball_ball(a, motion_a, b, motion_b, horizon);
@@ -415,7 +449,7 @@ Impact time_of_impact_ball_point(const Ball& a, const Motion& motion_a, Vec2 poi
   constexpr const char* kFunction = "time_of_impact_ball_point";
   validate_motion(kFunction, a, motion_a, horizon);
   detail::require_finite(kFunction, "point", point);
-  if (motion_a.acceleration == Vec2{}) {
+  if (motion_a.acceleration == Vec2{} && motion_a.growth == 0.0) {
     return time_of_impact_ball_point(a, motion_a.velocity, point, horizon);
   }
   return detail::accelerated_ball_point(a, motion_a, point, horizon);
@@ -427,7 +461,7 @@ Impact time_of_impact_ball_segment(const Ball& a, const Motion& motion_a, const 
   validate_motion(kFunction, a, motion_a, horizon);
   detail::require_finite(kFunction, "segment.a", segment.a);
   detail::require_finite(kFunction, "segment.b", segment.b);
-  if (motion_a.acceleration == Vec2{}) {
+  if (motion_a.acceleration == Vec2{} && motion_a.growth == 0.0) {
     return time_of_impact_ball_segment(a, motion_a.velocity, segment, horizon);
   }
   return detail::accelerated_ball_segment(a, motion_a, segment, horizon);
@@ -438,7 +472,7 @@ Impact time_of_impact_ball_arc(const Ball& a, const Motion& motion_a, const Arc&
   constexpr const char* kFunction = "time_of_impact_ball_arc";
   validate_motion(kFunction, a, motion_a, horizon);
   const detail::ArcFrame frame = detail::make_arc_frame(kFunction, arc);
-  if (motion_a.acceleration == Vec2{}) {
+  if (motion_a.acceleration == Vec2{} && motion_a.growth == 0.0) {
     return time_of_impact_ball_arc(a, motion_a.velocity, arc, horizon);
   }
   return detail::accelerated_ball_arc(a, motion_a, frame, horizon);

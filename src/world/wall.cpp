@@ -38,7 +38,9 @@ Impact time_of_impact(const Wall& wall, const Ball& ball, Vec2 velocity, double 
 }
 
 Impact time_of_impact(const Wall& wall, const Ball& ball, const Motion& motion, double horizon) {
-  if (motion.acceleration == Vec2{}) return time_of_impact(wall, ball, motion.velocity, horizon);
+  if (motion.acceleration == Vec2{} && motion.growth == 0.0) {
+    return time_of_impact(wall, ball, motion.velocity, horizon);
+  }
   return wall.is_arc ? accelerated_ball_arc(ball, motion, wall.frame, horizon)
                      : accelerated_ball_segment(ball, motion, wall.segment, horizon);
 }

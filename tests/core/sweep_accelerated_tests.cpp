@@ -364,5 +364,136 @@ TEST(SweepAcceleratedReference, BallInsideArcBowls) {
   });
 }
 
+// ---- growing balls ----------------------------------------------------------------------------
+
+TEST(SweepGrowth, BallsAtRestMeetWhenTheirRadiiFillTheGap) {
+  // Centres 10 apart, radii 1 and 2 growing at 0.5 and 1.5: the gap of 7 closes at 7/2.
+  const Impact two = time_of_impact_ball_ball({{0.0, 0.0}, 1.0}, Motion{{}, {}, 0.5},
+                                              {{10.0, 0.0}, 2.0}, Motion{{}, {}, 1.5}, 10.0);
+  ASSERT_TRUE(two.hit);
+  EXPECT_DOUBLE_EQ(two.t, 3.5);
+  EXPECT_EQ(two.normal, (Vec2{1.0, 0.0}));
+  // The contact point divides the centres' line by the radii at the contact (2.75 and 7.25).
+  EXPECT_DOUBLE_EQ(two.point.x, 2.75);
+  // Against a segment's line and a point, only the ball grows.
+  const Impact wall = time_of_impact_ball_segment({{0.0, 3.0}, 1.0}, Motion{{}, {}, 0.25},
+                                                  {{-5.0, 0.0}, {5.0, 0.0}}, 10.0);
+  ASSERT_TRUE(wall.hit);
+  EXPECT_DOUBLE_EQ(wall.t, 8.0);
+  EXPECT_EQ(wall.normal, (Vec2{0.0, -1.0}));
+  const Impact point =
+      time_of_impact_ball_point({{0.0, 3.0}, 1.0}, Motion{{}, {}, 0.25}, {0.0, 0.0}, 10.0);
+  ASSERT_TRUE(point.hit);
+  EXPECT_DOUBLE_EQ(point.t, 8.0);
+}
+
+TEST(SweepGrowth, GrowthOutrunsARetreatAndATouchGrowingIsAContactNow) {
+  // Moving away at 1 while the sum of radii grows at 3: the gap of 2 closes at 1.
+  const Impact away = time_of_impact_ball_ball({{0.0, 0.0}, 1.0}, Motion{{-1.0, 0.0}, {}, 1.5},
+                                               {{4.0, 0.0}, 1.0}, Motion{{}, {}, 1.5}, 10.0);
+  ASSERT_TRUE(away.hit);
+  EXPECT_DOUBLE_EQ(away.t, 1.0);
+  // Touching and parting slower than the growth: in contact now.
+  const Impact touching = time_of_impact_ball_ball({{0.0, 0.0}, 1.0}, Motion{{-0.5, 0.0}, {}, 1.0},
+                                                   {{2.0, 0.0}, 1.0}, Motion{{}, {}, 0.0}, 1.0);
+  ASSERT_TRUE(touching.hit);
+  EXPECT_EQ(touching.t, 0.0);
+  // Parting faster than the growth: no contact.
+  EXPECT_FALSE(time_of_impact_ball_ball({{0.0, 0.0}, 1.0}, Motion{{-2.0, 0.0}, {}, 1.0},
+                                        {{2.0, 0.0}, 1.0}, Motion{{}, {}, 0.0}, 1.0)
+                   .hit);
+  // A growing ball in a bowl meets the wall however it moves.
+  const Impact bowl = time_of_impact_ball_arc({{0.0, 0.0}, 1.0}, Motion{{}, {}, 1.0},
+                                              {{0.0, 0.0}, 5.0, 0.0, 6.0}, 10.0);
+  ASSERT_TRUE(bowl.hit);
+  EXPECT_NEAR(bowl.t, 4.0, 1e-12);
+}
+
+TEST(SweepGrowth, ZeroGrowthIsTheStraightLineQueryAndShrinkingIsRefused) {
+  const Ball a{{0.0, 0.0}, 1.0};
+  const Ball b{{5.0, 1.0}, 1.5};
+  EXPECT_TRUE(same(time_of_impact_ball_ball(a, Motion{{2.0, 0.5}, {}, 0.0}, b,
+                                            Motion{{-1.0, 0.0}, {}, 0.0}, 3.0),
+                   time_of_impact_ball_ball(a, Vec2{2.0, 0.5}, b, Vec2{-1.0, 0.0}, 3.0)));
+  EXPECT_THROW((void)time_of_impact_ball_point(a, Motion{{}, {}, -1.0}, {3.0, 0.0}, 1.0),
+               InvalidArgument);
+  EXPECT_THROW(
+      (void)time_of_impact_ball_ball(a, Motion{{}, {}, 0.0}, b, Motion{{}, {}, std::nan("")}, 1.0),
+      InvalidArgument);
+}
+
+double random_growth(RandomCases& random) { return random.uniform(0.0, 3.0); }
+
+TEST(SweepGrowthReference, BallBall) {
+  compare_random_cases(31, reference_cases(), [](RandomCases& random) {
+    const Ball a = random.ball(10.0);
+    const Ball b = random.ball(10.0);
+    const Motion ma{random.move_towards(a.center, b.center, 4.0), random_acceleration(random),
+                    random_growth(random)};
+    const Motion mb{random.point(6.0), random.uniform(0.0, 1.0) < 0.5 ? ma.acceleration : Vec2{},
+                    random_growth(random)};
+    return Case{time_of_impact_ball_ball(a, ma, b, mb, 1.0), [=](double t) {
+                  return distance(at(a.center, ma.velocity, ma.acceleration, t),
+                                  at(b.center, mb.velocity, mb.acceleration, t)) -
+                         (a.radius + ma.growth * t) - (b.radius + mb.growth * t);
+                }};
+  });
+}
+
+TEST(SweepGrowthReference, BallPoint) {
+  compare_random_cases(32, reference_cases(), [](RandomCases& random) {
+    const Ball ball = random.ball(10.0);
+    const Vec2 point = random.point(6.0);
+    const Motion m{random.move_towards(ball.center, point, 4.0), Vec2{}, random_growth(random)};
+    return Case{time_of_impact_ball_point(ball, m, point, 1.0), [=](double t) {
+                  return distance(at(ball.center, m.velocity, m.acceleration, t), point) -
+                         (ball.radius + m.growth * t);
+                }};
+  });
+}
+
+TEST(SweepGrowthReference, BallSegment) {
+  compare_random_cases(33, reference_cases(), [](RandomCases& random) {
+    const Segment segment = random.segment(8.0);
+    const Ball ball = random.ball(10.0);
+    const Motion m{random.move_towards(ball.center, random.point(6.0), 4.0), Vec2{},
+                   random_growth(random)};
+    return Case{time_of_impact_ball_segment(ball, m, segment, 1.0), [=](double t) {
+                  return testing::distance_to_segment(
+                             at(ball.center, m.velocity, m.acceleration, t), segment) -
+                         (ball.radius + m.growth * t);
+                }};
+  });
+}
+
+TEST(SweepGrowthReference, BallArc) {
+  compare_random_cases(34, reference_cases(), [](RandomCases& random) {
+    const Arc arc = random.arc(6.0);
+    const Ball ball = random.ball(10.0);
+    const Motion m{random.move_towards(ball.center, random.point(6.0), 4.0), Vec2{},
+                   random_growth(random)};
+    return Case{time_of_impact_ball_arc(ball, m, arc, 1.0), [=](double t) {
+                  return testing::distance_to_arc(at(ball.center, m.velocity, m.acceleration, t),
+                                                  arc) -
+                         (ball.radius + m.growth * t);
+                }};
+  });
+}
+
+TEST(SweepGrowthReference, BallInsideArcBowls) {
+  compare_random_cases(35, reference_cases(), [](RandomCases& random) {
+    Arc arc = random.arc(2.0);
+    arc.radius = random.uniform(3.0, 8.0);
+    const double ball_radius = random.uniform(0.1, 0.6) * arc.radius;
+    const Ball ball{arc.center + random.point(arc.radius * 0.3), ball_radius};
+    const Motion m{random.point(3.0 * arc.radius), Vec2{}, random.uniform(0.0, 0.3) * arc.radius};
+    return Case{time_of_impact_ball_arc(ball, m, arc, 1.0), [=](double t) {
+                  return testing::distance_to_arc(at(ball.center, m.velocity, m.acceleration, t),
+                                                  arc) -
+                         (ball.radius + m.growth * t);
+                }};
+  });
+}
+
 }  // namespace
 }  // namespace carom

@@ -38,6 +38,19 @@ Exact difference(Vec2 p, Vec2 q) {
   return {p * 0.5 - q * 0.5, 1};
 }
 
+// A growth (>= 0) whose true value is value·2^extra (two growths whose sum overflowed are kept
+// halved, with extra 1).
+struct Growth {
+  double value = 0.0;
+  int extra = 0;
+};
+
+Growth sum_of(double g, double h) {
+  const double sum = g + h;
+  if (std::isfinite(sum)) return {sum, 0};
+  return {0.5 * g + 0.5 * h, 1};
+}
+
 // The scales of one problem: lengths by 2^-length and times by 2^-time, so that every offset and
 // radius is below 1 in magnitude and so are velocity·t and ½·acceleration·t² over a unit of
 // scaled time. Powers of two change no rounding.
@@ -51,7 +64,9 @@ struct Scale {
   }
   [[nodiscard]] double distance(double r) const { return std::ldexp(r, -length); }
   [[nodiscard]] Vec2 velocity(const Exact& v) const { return scaled(v.v, v.extra + time - length); }
-  [[nodiscard]] double speed(double v) const { return std::ldexp(v, time - length); }
+  [[nodiscard]] double speed(const Growth& g) const {
+    return std::ldexp(g.value, g.extra + time - length);
+  }
   [[nodiscard]] Vec2 acceleration(const Exact& a) const {
     return scaled(a.v, a.extra + 2 * time - length);
   }
@@ -75,13 +90,11 @@ Scale make_scale(int largest_length_exponent, const Exact& velocity, const Exact
 }
 
 // The speed that sets a problem's time scale: the velocity's, or a growth larger than it.
-Exact fastest(const Exact& velocity, double growth) {
-  if (growth == 0.0 ||
-      (velocity.v != Vec2{} && std::ldexp(std::max(std::abs(velocity.v.x), std::abs(velocity.v.y)),
-                                          velocity.extra) >= growth)) {
-    return velocity;
-  }
-  return {{growth, 0.0}, 0};
+Exact fastest(const Exact& velocity, const Growth& growth) {
+  if (growth.value == 0.0) return velocity;
+  const Exact as_speed{{growth.value, 0.0}, growth.extra};
+  if (velocity.v == Vec2{} || as_speed.exponent() > velocity.exponent()) return as_speed;
+  return velocity;
 }
 
 // A centre moving as s + u·t + ½·a·t² relative to a fixed point, in scaled units.
@@ -141,10 +154,13 @@ void keep_earliest(Candidate& best, double t, Vec2 point, Vec2 normal) {
   if (!best.found || t < best.t) best = {true, t, point, normal};
 }
 
-// The unit vector along `preferred`, or along the first non-zero fallback.
+// The unit vector along `preferred`, or along the first non-zero fallback; +x where all three
+// are zero (a ball that only grows, its centre on a point or a line: every direction is as
+// good).
 Vec2 direction_or(Vec2 preferred, Vec2 fallback, Vec2 last_resort) {
   if (preferred != Vec2{} && is_finite(preferred)) return normalized(preferred);
   if (fallback != Vec2{} && is_finite(fallback)) return normalized(fallback);
+  if (last_resort == Vec2{}) return {1.0, 0.0};
   return normalized(last_resort);
 }
 
@@ -156,12 +172,13 @@ class StaticQuery {
         motion_(motion),
         horizon_(horizon),
         scale_(make_scale(std::max(largest_length_exponent, exponent_of(ball.radius)),
-                          fastest({motion.velocity, 0}, motion.growth), {motion.acceleration, 0})),
+                          fastest({motion.velocity, 0}, {motion.growth, 0}),
+                          {motion.acceleration, 0})),
         u_(scale_.velocity({motion.velocity, 0})),
         a_(scale_.acceleration({motion.acceleration, 0})),
         scaled_horizon_(scale_.to_scaled_time(horizon)),
         radius_(scale_.distance(ball.radius)),
-        growth_(scale_.speed(motion.growth)) {}
+        growth_(scale_.speed({motion.growth, 0})) {}
 
   [[nodiscard]] Vec2 center_at(double t) const { return position_at(ball_.center, motion_, t); }
   // The path of the ball's centre relative to `origin`, scaled.
@@ -379,14 +396,14 @@ Impact accelerated_ball_ball(const Ball& a, const Motion& motion_a, const Ball& 
   // Relative motion: A moves by the difference of the motions, B stands still.
   const Exact velocity = difference(motion_a.velocity, motion_b.velocity);
   const Exact acceleration = difference(motion_a.acceleration, motion_b.acceleration);
-  const double growth = motion_a.growth + motion_b.growth;
+  const Growth growth = sum_of(motion_a.growth, motion_b.growth);
   const int length =
       std::max(offset_exponent(a.center, b.center), exponent_of(std::max(a.radius, b.radius)) + 1);
   const Scale scale = make_scale(length, fastest(velocity, growth), acceleration);
   const Path path{scale.offset(a.center, b.center), scale.velocity(velocity),
                   scale.acceleration(acceleration)};
   const double reach = scale.distance(a.radius) + scale.distance(b.radius);
-  const bool moving = velocity.v != Vec2{} || acceleration.v != Vec2{} || growth != 0.0;
+  const bool moving = velocity.v != Vec2{} || acceleration.v != Vec2{} || growth.value != 0.0;
   Impact out;
   out.overlapping = strictly_within_distance(path.s, reach);
   double scaled_t = 0.0;
@@ -405,7 +422,8 @@ Impact accelerated_ball_ball(const Ball& a, const Motion& motion_a, const Ball& 
   const Vec2 at = path.at(scaled_t);  // A's centre from B's, scaled
   out.normal = direction_or(-at, -(path.u + path.a * scaled_t), -path.a);
   const double radius_a = a.radius + motion_a.growth * out.t;
-  const double share = radius_a / (radius_a + b.radius + motion_b.growth * out.t);
+  const double grown_share = radius_a / (radius_a + b.radius + motion_b.growth * out.t);
+  const double share = std::isfinite(grown_share) ? grown_share : a.radius / (a.radius + b.radius);
   const Vec2 between = out.b_at - out.a_at;
   out.point = is_finite(between) ? out.a_at + between * share : out.a_at + out.normal * a.radius;
   return out;

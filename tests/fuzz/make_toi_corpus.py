@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the seed corpus of carom_toi_fuzz (tests/fuzz/corpus/toi/): one file per case, the
-17 doubles of toi_fuzz.cpp's input as little-endian bit patterns (a case of 13 leaves both
-accelerations zero). Each seed is a case worth
+19 doubles of toi_fuzz.cpp's input as little-endian bit patterns (a case of 13 leaves both
+accelerations zero, one of 17 both growths). Each seed is a case worth
 starting from: ordinary hits and misses, the edges (touching, graze, coincident centres), the
 ends of the double range, and invalid input. Run it from anywhere; it rewrites its own cases
 and leaves the folder's other files (inputs the fuzzer found, kept by hand) alone."""
@@ -14,7 +14,7 @@ TINY = 5e-324
 PI = math.pi
 
 # name: a.x a.y a.r va.x va.y  b.x b.y b.r vb.x vb.y  horizon  arc.start arc.end
-#       [aa.x aa.y ab.x ab.y]
+#       [aa.x aa.y ab.x ab.y [ga gb]]
 CASES = {
     "head_on_hit": [0, 0, 1, 4, 0, 5, 0, 1, 0, 0, 1, 0, PI],
     "tutorial": [0, 0, 1, 6, 2, 8, 3, 1.5, -4, -1, 1, -PI / 2, PI / 2],
@@ -49,6 +49,14 @@ CASES = {
     "huge_acceleration": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI, -MAX, MAX, MAX, 0],
     "tiny_acceleration": [0, 0, 1, 1, 0, 5, 3, 1, 0, 0, 1e300, 0, PI, TINY, -TINY, 0, 0],
     "nan_acceleration": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI, math.nan, 0, 0, 0],
+    "growing_at_rest": [0, 0, 1, 0, 0, 10, 0, 2, 0, 0, 10, 0, PI, 0, 0, 0, 0, 0.5, 1.5],
+    "growth_outruns_retreat": [0, 0, 1, -1, 0, 4, 0, 1, 0, 0, 10, 0, PI, 0, 0, 0, 0, 1.5, 1.5],
+    "growing_in_bowl": [0, 0, 1, 0.2, 0, 0, 0, 5, 0, 0, 10, 0, 6, 0, 0, 0, 0, 1, 0],
+    "growing_under_gravity": [0, 5, 0.5, 1, 0, -5, 0, 1, 5, 0, 2, 0, PI, 0, -9.81, 0, 0, 0.3, 0],
+    "huge_growth": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI, 0, 0, 0, 0, MAX, 0],
+    "negative_growth": [0, 0, 1, 1, 0, 5, 0, 1, 0, 0, 1, 0, PI, 0, 0, 0, 0, -1, 0],
+    "growths_overflowing_sum": [0, 0, 1, 0, 0, 5, 0, 1, 0, 0, 1, 0, PI, 0, 0, 0, 0, MAX, MAX],
+    "growing_on_a_segment_line": [0, 0, 1, 0, 0, 10, 0, 2, 0, 0, 10, 0, PI, 0, 0, 0, 0, 0.5, 0],
 }
 
 
@@ -56,7 +64,7 @@ def main() -> None:
     folder = pathlib.Path(__file__).resolve().parent / "corpus" / "toi"
     folder.mkdir(parents=True, exist_ok=True)
     for name, values in CASES.items():
-        assert len(values) in (13, 17), name
+        assert len(values) in (13, 17, 19), name
         (folder / name).write_bytes(
             struct.pack(f"<{len(values)}d", *[float(v) for v in values]))
 

@@ -4,14 +4,14 @@
 // normal, or no hit; never a NaN, never a crash. It also checks the promises that tie the
 // queries together: ball–ball is symmetric, the step form is the time form with horizon 1, the
 // batch kernel answers bit for bit as the scalar one, a segment whose ends coincide is a point,
-// and a zero acceleration gives the straight-line answer. Under an acceleration, a hit at
-// ordinary magnitudes is a real touch.
+// and a zero acceleration and growth give the straight-line answer. Under an acceleration or a
+// growth, a hit at ordinary magnitudes is a real touch.
 //
-// Input: up to 17 doubles, 8 bytes each, little-endian bit patterns (missing bytes read as 0):
+// Input: up to 19 doubles, 8 bytes each, little-endian bit patterns (missing bytes read as 0):
 //   a.x a.y a.radius va.x va.y  b.x b.y b.radius vb.x vb.y  horizon  arc.start arc.end
-//   aa.x aa.y ab.x ab.y
+//   aa.x aa.y ab.x ab.y  ga gb
 // B's centre doubles as the point, the segment's start (vb its end) and the arc's centre; aa and
-// ab are the accelerations of A and B.
+// ab are the accelerations of A and B, ga and gb their growths (radius per time).
 // Seeds: tests/fuzz/corpus/toi/ (written by tests/fuzz/make_toi_corpus.py).
 #include <algorithm>
 #include <cmath>
@@ -37,7 +37,7 @@ using carom::Impact;
 using carom::Segment;
 using carom::Vec2;
 
-constexpr std::size_t kDoubles = 17;
+constexpr std::size_t kDoubles = 19;
 
 [[noreturn]] void fail(const char* what) {
   std::fprintf(stderr, "carom toi fuzz: %s\n", what);
@@ -58,14 +58,24 @@ struct Input {
   double end_angle = 0.0;
   Vec2 aa;
   Vec2 ab;
+  double ga = 0.0;
+  double gb = 0.0;
 };
 
 Input decode(const std::uint8_t* data, std::size_t size) {
   double v[kDoubles] = {};
   std::memcpy(v, data, std::min(size, sizeof v));
-  return {
-      {{v[0], v[1]}, v[2]}, {v[3], v[4]},  {{v[5], v[6]}, v[7]}, {v[8], v[9]}, v[10], v[11], v[12],
-      {v[13], v[14]},       {v[15], v[16]}};
+  return {{{v[0], v[1]}, v[2]},
+          {v[3], v[4]},
+          {{v[5], v[6]}, v[7]},
+          {v[8], v[9]},
+          v[10],
+          v[11],
+          v[12],
+          {v[13], v[14]},
+          {v[15], v[16]},
+          v[17],
+          v[18]};
 }
 
 bool finite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
@@ -199,29 +209,34 @@ bool ordinary(std::initializer_list<double> values) {
 // The same queries under accelerations: valid answers, symmetry, the straight-line answer for
 // zero accelerations, and real touches at ordinary magnitudes.
 void fuzz_accelerated(const Input& in) {
-  const carom::Motion ma{in.va, in.aa};
-  const carom::Motion mb{in.vb, in.ab};
-  const bool moving_valid =
-      valid_ball(in.a) && finite(in.va) && finite(in.aa) && valid_horizon(in.horizon);
+  const carom::Motion ma{in.va, in.aa, in.ga};
+  const carom::Motion mb{in.vb, in.ab, in.gb};
+  const auto valid_growth = [](double g) { return std::isfinite(g) && g >= 0.0; };
+  const bool moving_valid = valid_ball(in.a) && finite(in.va) && finite(in.aa) &&
+                            valid_growth(in.ga) && valid_horizon(in.horizon);
   Impact ab;
-  if (call([&] { return carom::time_of_impact_ball_ball(in.a, ma, in.b, mb, in.horizon); },
-           moving_valid && valid_ball(in.b) && finite(in.vb) && finite(in.ab), ab)) {
+  if (call(
+          [&] { return carom::time_of_impact_ball_ball(in.a, ma, in.b, mb, in.horizon); },
+          moving_valid && valid_ball(in.b) && finite(in.vb) && finite(in.ab) && valid_growth(in.gb),
+          ab)) {
     check_answer(ab, in.horizon);
     const Impact ba = carom::time_of_impact_ball_ball(in.b, mb, in.a, ma, in.horizon);
     check(ab.hit == ba.hit && ab.t == ba.t, "accelerated ball-ball is not symmetric in A and B");
-    if (in.aa == Vec2{} && in.ab == Vec2{}) {
+    if (in.aa == Vec2{} && in.ab == Vec2{} && in.ga == 0.0 && in.gb == 0.0) {
       check(same(ab, carom::time_of_impact_ball_ball(in.a, in.va, in.b, in.vb, in.horizon)),
             "zero accelerations differ from the straight-line answer");
     }
-    const bool checkable = ordinary({in.a.center.x, in.a.center.y, in.a.radius, in.va.x, in.va.y,
-                                     in.aa.x, in.aa.y, in.b.center.x, in.b.center.y, in.b.radius,
-                                     in.vb.x, in.vb.y, in.ab.x, in.ab.y, in.horizon}) &&
-                           in.a.radius >= 1e-3 && in.b.radius >= 1e-3;
+    const bool checkable =
+        ordinary({in.a.center.x, in.a.center.y, in.a.radius, in.va.x, in.va.y, in.aa.x, in.aa.y,
+                  in.b.center.x, in.b.center.y, in.b.radius, in.vb.x, in.vb.y, in.ab.x, in.ab.y,
+                  in.horizon, in.ga, in.gb}) &&
+        in.a.radius >= 1e-3 && in.b.radius >= 1e-3;
     if (ab.hit && ab.t > 0.0 && checkable) {
       // At a hit after the start, the centres are the sum of the radii apart, to the rounding
       // of the positions and the time.
       const double apart = std::hypot(ab.b_at.x - ab.a_at.x, ab.b_at.y - ab.a_at.y);
-      check(std::abs(apart - (in.a.radius + in.b.radius)) <= 1e-6 * (1.0 + in.horizon) * 1e3,
+      const double reach = in.a.radius + in.b.radius + (in.ga + in.gb) * ab.t;
+      check(std::abs(apart - reach) <= 1e-6 * (1.0 + in.horizon) * 1e3,
             "an accelerated ball-ball hit is no touch");
     }
   }

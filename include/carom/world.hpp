@@ -75,6 +75,14 @@ struct WorldDef {
   // radius is below what any picture shows. Elastic contacts (restitution 1) bounce however low;
   // only a ball touching a support with no speed to leave it rests.
   double rest_height = 1e-3;
+  // Growth (compression): while it is not 0, every movable ball's radius grows as
+  // r(t) = r(t₀)·(1 + growth_rate·(t − t₀)), t₀ the time growth was last started or changed, so
+  // that size ratios keep (Lubachevsky–Stillinger); immovable balls and walls keep their size.
+  // Contacts stay exact (the gaps are quadratics), and a contact's two balls part faster than
+  // their radii grow, so growing balls never overlap (docs/world.md, "Growth"). >= 0, finite;
+  // 0, the default, keeps radii fixed and every result what it is without the field. Changed
+  // between steps by set_growth_rate. Not together with gravity.
+  double growth_rate = 0.0;
 };
 
 struct BallDef {
@@ -241,6 +249,7 @@ class World {
   [[nodiscard]] double time() const noexcept;
   [[nodiscard]] Vec2 position(BallId id) const;
   [[nodiscard]] Vec2 velocity(BallId id) const;
+  // (Under growth, the radius at the world's time.)
   [[nodiscard]] double radius(BallId id) const;
   [[nodiscard]] double mass(BallId id) const;
   [[nodiscard]] std::uint64_t user_data(BallId id) const;
@@ -258,6 +267,10 @@ class World {
   // Sets WorldDef::gravity (finite) from the world's time on; every ball keeps its place and
   // velocity at that time.
   void set_gravity(Vec2 gravity);
+  // Sets WorldDef::growth_rate (finite, >= 0) from the world's time on: radii grow from what they
+  // are now (t₀ becomes now). Throws InvalidArgument for a rate other than 0 while gravity is
+  // on (and set_gravity for gravity while a world grows).
+  void set_growth_rate(double rate);
 
   // ---- changing balls between steps ----
   void set_velocity(BallId id, Vec2 velocity);

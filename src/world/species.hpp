@@ -58,6 +58,14 @@ class SpeciesTable {
     free_.push_back(id);
     --live_;
   }
+  // Every movable species' radius times `factor` (growth brought to now). Sharing starts afresh:
+  // a species' key has changed.
+  void scale_movable_radii(double factor) {
+    for (Species& s : table_) {
+      if (s.balls > 0 && s.movable()) s.radius *= factor;
+    }
+    cache_ = filled_cache();
+  }
   // How many species have balls: 1 in a world whose balls are all of one kind.
   [[nodiscard]] std::uint32_t live() const { return live_; }
   [[nodiscard]] const Species& operator[](std::uint32_t id) const { return table_[id]; }

@@ -125,8 +125,17 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
   }
   detail::require_finite(kFunction, "def.gravity", def.gravity);
   detail::require_positive(kFunction, "def.rest_height", def.rest_height);
+  detail::require_finite(kFunction, "def.growth_rate", def.growth_rate);
+  detail::require_non_negative(kFunction, "def.growth_rate", def.growth_rate);
+  if (def.growth_rate != 0.0 && def.gravity != Vec2{}) {
+    refuse(kFunction, "def.growth_rate", carom::number_text(def.growth_rate),
+           "must be 0 while def.gravity is set: balls grow or fall, not both");
+  }
   impl_->def = def;
   impl_->gravity_on = def.gravity != Vec2{};
+  impl_->growth_on = def.growth_rate != 0.0;
+  impl_->growth_relative = def.growth_rate;
+  impl_->general_motion = impl_->gravity_on || impl_->growth_on;
   impl_->periodic_cell = PeriodicCell(def.lower, def.upper);
   if (def.boundary == Boundary::box) {
     add_box(def.lower, def.upper);
@@ -152,6 +161,8 @@ BallId World::add_ball(const BallDef& def) {
              "a periodic cell must be more than 3 diameters wide on each axis");
     }
   }
+  // (Under growth the species take the radii of now, the new ball's among them.)
+  w.settle_growth();
   w.ensure_grid(position, def.radius);
   const std::string overlap =
       w.overlap_at(position, def.radius, std::numeric_limits<std::uint32_t>::max());
@@ -185,6 +196,7 @@ BallId World::add_ball(const BallDef& def) {
   ++b.version;
   w.largest_radius = std::max(w.largest_radius, def.radius);
   w.grid.insert(slot, w.grid.cell_of(position));
+  if (w.growth_on) w.plan_growth_regrid();
   w.repredict_changed(slot);
   return w.id_of(slot);
 }
@@ -369,7 +381,7 @@ Vec2 World::velocity(BallId id) const {
 }
 
 double World::radius(BallId id) const {
-  return impl_->radius_of(impl_->slot_of("World::radius", id));
+  return impl_->radius_at(impl_->slot_of("World::radius", id), impl_->time);
 }
 
 double World::mass(BallId id) const {
@@ -421,11 +433,39 @@ void World::set_gravity(Vec2 gravity) {
   detail::require_finite("World::set_gravity", "gravity", gravity);
   Impl& w = *impl_;
   if (gravity == w.def.gravity) return;
+  if (w.growth_on && gravity != Vec2{}) {
+    refuse("World::set_gravity", "gravity", detail::vector_text(gravity),
+           "must be zero while the balls grow (WorldDef::growth_rate): they grow or fall, not "
+           "both");
+  }
   // Every ball is brought to now under the old law, and predicted again under the new one.
   w.synchronize(w.time);
   w.def.gravity = gravity;
   w.gravity_on = gravity != Vec2{};
+  w.general_motion = w.gravity_on || w.growth_on;
   w.reset_carriages();  // resting and sliding balls fall, and settle again under the new gravity
+  w.events_valid = false;
+}
+
+void World::set_growth_rate(double rate) {
+  constexpr const char* kFunction = "World::set_growth_rate";
+  detail::require_finite(kFunction, "rate", rate);
+  detail::require_non_negative(kFunction, "rate", rate);
+  Impl& w = *impl_;
+  if (rate == w.def.growth_rate) return;
+  if (rate != 0.0 && w.gravity_on) {
+    refuse(kFunction, "rate", carom::number_text(rate),
+           "must be 0 while gravity is on (WorldDef::gravity): balls grow or fall, not both");
+  }
+  // Radii as they are now, then growing at the new rate from now; every ball predicted again.
+  w.synchronize(w.time);
+  w.settle_growth();
+  w.def.growth_rate = rate;
+  w.growth_on = rate != 0.0;
+  w.general_motion = w.gravity_on || w.growth_on;
+  w.growth_start = w.time;
+  w.growth_relative = rate;
+  w.plan_growth_regrid();
   w.events_valid = false;
 }
 
@@ -533,6 +573,7 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   const std::uint32_t slot = w.slot_of(kFunction, id);
   detail::require_finite(kFunction, "position", position);
   if (w.gravity_on) w.advance(slot, w.time);  // (the velocity too, re-based to now)
+  w.settle_growth();  // (the radii of now, which the sweep and the overlap test read)
   BallSlot& b = w.balls[slot];
   const Vec2 from = w.position_at(slot, w.time);
   Vec2 target = position;

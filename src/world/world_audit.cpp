@@ -44,7 +44,7 @@ double position_rounding(Vec2 p, Vec2 v, double time) {
 Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) const {
   const Impl& w = *this;
   const detail::BallSlot& a = w.balls[i];
-  const double radius = w.radius_of(i);
+  const double radius = w.radius_at(i, w.time);
   if (!is_finite(p) || !is_finite(a.velocity)) {
     return ball_name(w.handle_of[i]) + " has a non-finite position or velocity";
   }
@@ -64,7 +64,7 @@ Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) con
 Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
                                   double tolerance) const {
   const Impl& w = *this;
-  const double radius = w.radius_of(i);
+  const double radius = w.radius_at(i, w.time);
   const double gap = length(detail::nearest_point(w.walls[k], p) - p);
   const double slack = tolerance * radius + position_rounding(p, w.balls[i].velocity, w.time);
   if (gap < radius - slack) {
@@ -80,7 +80,7 @@ Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
   // Two immovable balls pass through each other (nothing could respond; docs/engine.md,
   // "Response"): their overlap breaks no promise.
   if (!w.movable(i) && !w.movable(j)) return std::nullopt;
-  const double reach = w.radius_of(i) + w.radius_of(j);
+  const double reach = w.radius_at(i, w.time) + w.radius_at(j, w.time);
   const Vec2 q = w.position_at(j, w.time);
   const double gap = length(w.minimum_image(q - p));
   const double slack = tolerance * reach + position_rounding(p, w.balls[i].velocity, w.time) +

@@ -66,7 +66,7 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, b
   }
   grid.erase(ball);
   grid.insert(ball, grid.index(cx, cy));
-  if (gravity_on) [[unlikely]] {
+  if (general_motion) [[unlikely]] {
     predict_under_gravity(ball);
     return;
   }

@@ -1,10 +1,10 @@
-// Prediction under gravity: a ball's one pending event when balls move on parabolas
-// (docs/engine.md, "Gravity"). The same events as without gravity (contacts with the balls and
-// walls around, and leaving the cell), each time exact: two balls with the same acceleration keep a
-// linear relative motion (the quadratic of the straight-line case), every other gap is a polynomial
-// in time closed by the core's certified isolation (core/accelerated_sweep.hpp), and a cell's side
-// is reached at the root of a quadratic. Apart from the straight-line parts, so that a world
-// without gravity runs exactly as it did.
+// Prediction under gravity or growth: a ball's one pending event when balls move on parabolas
+// or grow (docs/engine.md, "Gravity", "Growth"). The same events as without them (contacts with
+// the balls and walls around, and leaving the cell), each time exact: two balls with the same
+// acceleration and no growth keep a linear relative motion (the quadratic of the straight-line
+// case), every other gap is a polynomial in time closed by the core's certified isolation
+// (core/accelerated_sweep.hpp), and a cell's side is reached at the root of a quadratic. Apart
+// from the straight-line parts, so that a world without either runs exactly as it did.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -80,7 +80,8 @@ void World::Impl::advance_under_gravity(std::uint32_t ball, double t) {
 void World::Impl::predict_under_gravity(std::uint32_t ball) {
   // A ball whose support no longer holds it falls (a safety net: whatever changes a carrier
   // frees what it carried, disturb).
-  if (movable(ball) && carriages[ball].state != detail::Carried::free && !supports_hold(ball)) {
+  if (gravity_on && movable(ball) && carriages[ball].state != detail::Carried::free &&
+      !supports_hold(ball)) {
     disturb(ball);
     ++balls[ball].version;
   }
@@ -108,10 +109,12 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   // and sliding"); a sliding ball leaves its support where its coordinate along the line passes
   // an end.
   const detail::Carriage* carried = nullptr;
-  if (movable(ball) && carriages[ball].state != detail::Carried::free) carried = &carriages[ball];
+  if (gravity_on && movable(ball) && carriages[ball].state != detail::Carried::free) {
+    carried = &carriages[ball];
+  }
   // Whether ball `other` rests or slides on the support `key`.
   const auto carries = [&](std::uint32_t other, std::uint32_t key) {
-    if (!movable(other)) return false;
+    if (!gravity_on || !movable(other)) return false;
     const detail::Carriage& c = carriages[other];
     const auto end = c.support.begin() + c.supports;
     return std::find(c.support.begin(), end, key) != end;
@@ -157,7 +160,8 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   };
 
   const detail::Species& kind = species[b.species];
-  const Ball shape{p, kind.radius};
+  const double radius = radius_at(ball, time);
+  const Ball shape{p, radius};
   for (const std::uint32_t w : grid.walls(cell)) {
     if (supported_by(w)) continue;
     const Impact impact = detail::time_of_impact(walls[w], shape, motion, horizon());
@@ -171,13 +175,15 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const bool few_cells =
       periodic && (grid.nx() < kSingleImageMinCells || grid.ny() < kSingleImageMinCells);
   // A contact at the world's time itself counts only where the response will act on it: the two
-  // approach, or gravity presses them together, along the normal the response takes (else the
-  // pair, left alone, would be predicted again at once, for ever).
-  const auto acts_now = [&](double t, Vec2 offset, Vec2 other_velocity, Vec2 other_acceleration) {
+  // approach, gravity presses them together along the normal the response takes, or they grow
+  // (else the pair, left alone, would be predicted again at once, for ever).
+  const double growth = motion.growth;
+  const auto acts_now = [&](double t, Vec2 offset, Vec2 other_velocity, Vec2 other_acceleration,
+                            double other_growth) {
     if (time + t != time || offset == Vec2{}) return true;
     const Vec2 normal = normalized(-offset);
     return detail::approaching(v, other_velocity, normal) ||
-           dot(a - other_acceleration, normal) > 0.0;
+           dot(a - other_acceleration, normal) > 0.0 || growth + other_growth > 0.0;
   };
   detail::PairBatch& batch = pair_batch;
   batch.count = 0;
@@ -186,7 +192,7 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const auto take = [&](std::size_t k, double t) {
     const std::uint32_t other = batch.other[k];
     const Vec2 offset{batch.sx[k], batch.sy[k]};
-    if (acts_now(t, offset, velocity_at(other, time), a)) {
+    if (acts_now(t, offset, velocity_at(other, time), a, 0.0)) {
       consider(t, EventKind::ball_ball, other, balls[other].version);
     }
   };
@@ -207,27 +213,30 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const auto pair = [&](std::uint32_t other, Vec2 offset) {
     // offset: from the other ball's centre to this one's, at the world's time.
     const BallSlot& o = balls[other];
-    const detail::Species& other_kind = species[o.species];
     const Vec2 other_velocity = velocity_at(other, time);
     const Vec2 other_acceleration = acceleration_of(other);
-    const double reach = kind.radius + other_kind.radius;
+    const double other_growth = growth_of(other);
+    const double other_radius = radius_at(other, time);
+    const double reach = radius + other_radius;
     const double limit = horizon();
-    if (other_acceleration == a) {
+    if (other_acceleration == a && growth == 0.0 && other_growth == 0.0) {
       // A shared acceleration cancels in the difference: the straight-line quadratic, solved in
       // batches by the pair kernel (the same arithmetic as entry_crossing).
       batch.push(offset, v - other_velocity, reach, other);
       if (batch.full()) solve_batch();
       return;
     }
-    // Out of reach within the horizon (the gap can close by at most |u|·h + ½|a|·h²): no quartic
-    // to isolate. Most pairs of a ball among pegs are so.
+    // Out of reach within the horizon (the gap can close by at most |u|·h + ½|a|·h² and the
+    // growths' share): no quartic to isolate. Most pairs of a ball among pegs are so.
     const double travel =
-        limit * (length(v - other_velocity) + 0.5 * length(a - other_acceleration) * limit);
+        limit * (length(v - other_velocity) + 0.5 * length(a - other_acceleration) * limit +
+                 growth + other_growth);
     if (length(offset) - reach > 1.0000001 * travel) return;
     const Impact impact = detail::accelerated_ball_ball(
-        Ball{offset, kind.radius}, motion, Ball{{}, other_kind.radius},
-        Motion{other_velocity, other_acceleration}, limit);
-    if (impact.hit && acts_now(impact.t, offset, other_velocity, other_acceleration)) {
+        Ball{offset, radius}, motion, Ball{{}, other_radius},
+        Motion{other_velocity, other_acceleration, other_growth}, limit);
+    if (impact.hit &&
+        acts_now(impact.t, offset, other_velocity, other_acceleration, other_growth)) {
       consider(impact.t, EventKind::ball_ball, other, o.version);
     }
   };

@@ -69,7 +69,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   Vec2 upper = extra_point;
   for (std::uint32_t i = 0; i < balls.size(); ++i) {
     if (!balls[i].alive()) continue;
-    largest = std::max(largest, radius_of(i));
+    largest = std::max(largest, radius_at(i, time));
     const Vec2 p = position_at(i, time);
     lower = {std::min(lower.x, p.x), std::min(lower.y, p.y)};
     upper = {std::max(upper.x, p.x), std::max(upper.y, p.y)};
@@ -118,6 +118,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
   list_walls();
   grid_valid = true;
   events_valid = false;
+  if (growth_on) plan_growth_regrid();
 }
 
 void World::Impl::list_walls() {

@@ -107,6 +107,18 @@ struct World::Impl : detail::BallStore {
   // Whether def.gravity is not zero: only then do the parts for accelerated motion run, so that a
   // world without gravity takes exactly the paths it always took.
   bool gravity_on = false;
+  // Whether def.growth_rate is not zero (balls grow: world_growth.cpp).
+  bool growth_on = false;
+  // Whether a law beyond straight lines at fixed radii moves the balls (gravity or growth): only
+  // then does the general prediction (world_gravity.cpp) run.
+  bool general_motion = false;
+  // Under growth: the time from which radii grow (the species' radii are those at it), the rate
+  // relative to those radii (def.growth_rate relative to the radii when it was set: the two
+  // differ once radii have been brought to a later time, which keeps each radius's growth speed),
+  // and the time at which the largest ball outgrows the grid's cells (then re-planned).
+  double growth_start = 0.0;
+  double growth_relative = 0.0;
+  double growth_regrid_time = std::numeric_limits<double>::infinity();
   // By slot, how gravity carries each ball (carriage.hpp): sized with the slots while gravity is
   // on, empty otherwise.
   std::vector<detail::Carriage> carriages;
@@ -125,6 +137,15 @@ struct World::Impl : detail::BallStore {
     return species[balls[ball].species];
   }
   [[nodiscard]] double radius_of(std::uint32_t ball) const { return species_of(ball).radius; }
+  // Under growth a movable ball's radius at t (radius_of is its radius at growth_start), and how
+  // fast it grows; otherwise radius_of and 0.
+  [[nodiscard]] double radius_at(std::uint32_t ball, double t) const {
+    if (!growth_on || !movable(ball)) return radius_of(ball);
+    return radius_of(ball) * (1.0 + growth_relative * (t - growth_start));
+  }
+  [[nodiscard]] double growth_of(std::uint32_t ball) const {
+    return growth_on && movable(ball) ? radius_of(ball) * growth_relative : 0.0;
+  }
   [[nodiscard]] bool movable(std::uint32_t ball) const { return species_of(ball).movable(); }
   // A ball's place and velocity at t (at or after its local time): on its straight line, or
   // under gravity on its parabola.
@@ -151,7 +172,7 @@ struct World::Impl : detail::BallStore {
     return gravity_on && movable(ball) ? carriages[ball].acceleration : Vec2{};
   }
   [[nodiscard]] Motion motion_of(std::uint32_t ball) const {
-    return {balls[ball].velocity, acceleration_of(ball)};
+    return {balls[ball].velocity, acceleration_of(ball), growth_of(ball)};
   }
   // The shortest of the periodic images of d (d itself in a world that does not wrap).
   [[nodiscard]] Vec2 minimum_image(Vec2 d) const {
@@ -192,6 +213,9 @@ struct World::Impl : detail::BallStore {
 
   // ---- save and resume (world_save.cpp) ----
   [[nodiscard]] std::string save_payload() const;
+  // The version of the save format this world is written in: with gravity 3, with growth 4, else
+  // 2 (world_save.cpp).
+  [[nodiscard]] std::uint32_t save_version() const;
   // Fills a freshly constructed world from a payload whose checksum matched, checking that its
   // content is consistent.
   void load_payload(detail::ByteReader& in, std::uint32_t version);
@@ -224,9 +248,22 @@ struct World::Impl : detail::BallStore {
   // the next run (docs/world.md, "Changing balls between steps").
   void repredict_changed(std::uint32_t ball);
   void predict(std::uint32_t ball);
-  // predict for a world with gravity (world_gravity.cpp): every pair and wall by the accelerated
-  // queries, the cell's exit by a quadratic, leaving a support by a quadratic.
+  // predict for a world with gravity or growth (world_gravity.cpp): every pair and wall by the
+  // accelerated queries, the cell's exit by a quadratic, leaving a support by a quadratic.
   void predict_under_gravity(std::uint32_t ball);
+
+  // ---- growth (world_growth.cpp; docs/engine.md, "Growth") ----
+  // Radii as they are now become the species' radii, and t₀ now: before the rate changes, and
+  // before a ball is added, so that the formula holds from one t₀.
+  void settle_growth();
+  // When the largest movable ball outgrows the cells: the time re-planning is due.
+  void plan_growth_regrid();
+  // The grid re-planned at its due time t (every ball brought to t, radii settled, predictions
+  // renewed), with room for the balls to grow into.
+  void regrid_for_growth(double t);
+  bool process_under_growth(const detail::Event& event);
+  bool resolve_pair_under_growth(std::uint32_t i, std::uint32_t j, double t);
+  bool resolve_wall_under_growth(std::uint32_t i, std::uint32_t wall, double t);
 
   // ---- resting and sliding under gravity (world_resting.cpp; docs/engine.md, "Resting and
   // sliding") ----
@@ -346,8 +383,9 @@ struct World::Impl : detail::BallStore {
   [[noreturn]] void refuse_never_ending(const char* function, const std::string& where,
                                         const std::string& how, const detail::Event& last,
                                         const std::string& otherwise) const;
+  // (share: where the contact point divides `between`, from i; negative: by the radii.)
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
-                        double approach, double impulse);
+                        double approach, double impulse, double share = -1.0);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
   // A ball leaving its cell through `side` at t: moved to the next cell and predicted, looking only
   // at the cells the crossing brings into reach where its last prediction found no contact

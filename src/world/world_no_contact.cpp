@@ -37,9 +37,10 @@ bool World::Impl::no_contact_ever() const {
   // Two balls of which at least one can respond are the only pairs that ever meet; both
   // immovable pass through each other.
   const auto can_meet = [&](std::uint32_t i, std::uint32_t j) { return movable(i) || movable(j); };
-  // Under gravity paths bend back towards what they left: nothing is proved (a run with no end
-  // time is then ended by its time limit, or by the queue running dry).
-  if (gravity_on) return false;
+  // Under gravity paths bend back towards what they left, and growing balls close every gap:
+  // nothing is proved (a run with no end time is then ended by its time limit, or by the queue
+  // running dry).
+  if (general_motion) return false;
 
   if (def.boundary == Boundary::periodic) {
     if (!walls.empty()) return false;

@@ -76,7 +76,7 @@ void World::Impl::repredict_changed(std::uint32_t ball) {
 // other ball's slot is left alone: this one's covers their pair (docs/engine.md, "One event per
 // ball").
 void World::Impl::predict(std::uint32_t ball) {
-  if (gravity_on) [[unlikely]] {
+  if (general_motion) [[unlikely]] {
     predict_under_gravity(ball);
     return;
   }

@@ -44,8 +44,8 @@ CAROM_ALWAYS_INLINE inline Vec2 unit_along(Vec2 d) {
 }  // namespace
 
 bool World::Impl::process(const Event& event) {
-  if (gravity_on) [[unlikely]]
-    return process_under_gravity(event);
+  if (general_motion) [[unlikely]]
+    return gravity_on ? process_under_gravity(event) : process_under_growth(event);
   const std::uint32_t i = event.owner;
   switch (event.kind) {
     case EventKind::ball_ball: {
@@ -101,7 +101,7 @@ bool World::Impl::resolve_ball_ball(std::uint32_t i, std::uint32_t j, double t) 
 }
 
 void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between,
-                                   Vec2 normal, double approach, double impulse) {
+                                   Vec2 normal, double approach, double impulse, double share) {
   const BallSlot& a = balls[i];
   const bool a_first = handle_before(i, j);  // the pair in handle order, as the docs promise
   ContactEvent contact;
@@ -110,9 +110,11 @@ void World::Impl::record_ball_ball(std::uint32_t i, std::uint32_t j, double t, V
   contact.a = id_of(a_first ? i : j);
   contact.b = id_of(a_first ? j : i);
   contact.normal = a_first ? normal : -normal;
-  const double radius_a = radius_of(i);
-  const double reach = radius_a + radius_of(j);
-  contact.point = a.position + between * (radius_a / reach);
+  if (share < 0.0) {
+    const double radius_a = radius_of(i);
+    share = radius_a / (radius_a + radius_of(j));
+  }
+  contact.point = a.position + between * share;
   contact.approach_speed = approach;
   contact.impulse = impulse;
   record(contact);

@@ -141,6 +141,12 @@ std::uint64_t World::Impl::run(const char* function, RunGoal goal, double end,
     ++events;
     if (++events_since_sort > sort_after) sort_by_cell();
     const Event event = queue.top();
+    if (growth_on && event.time > growth_regrid_time && growth_regrid_time <= end) [[unlikely]] {
+      // The largest ball outgrows the cells before this event: the grid is re-planned then, and
+      // every prediction renewed.
+      regrid_for_growth(growth_regrid_time);
+      continue;
+    }
     if (!(event.time <= end) || event.time == kInfinity) {
       // Reaching the time asked for is what a timed run is for; for a count of contacts, an end
       // of the queue means none will ever come, and a finite end is the caller's limit.

@@ -31,8 +31,11 @@ constexpr char kMagic[8] = {'C', 'A', 'R', 'O', 'M', 'W', 'L', 'D'};
 // 3: version 2 with gravity and the rest height after the cell size, and each slot's carriage
 // (resting and sliding); written only for a world with gravity, so that a world without it saves
 // exactly the bytes it always did.
+// 4: version 2 with the growth rate, the rate relative to the radii saved, its start and the
+// grid's re-planning time after the cell size; written only for a world whose balls grow.
 constexpr std::uint32_t kVersion = 2;
 constexpr std::uint32_t kGravityVersion = 3;
+constexpr std::uint32_t kGrowthVersion = 4;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -80,10 +83,10 @@ std::string read_payload(const char* function, const std::string& source, std::i
             "truncated: the header needs " + std::to_string(kHeaderSize) + " bytes");
   }
   version = static_cast<std::uint32_t>(get_unsigned(header + 8, 4));
-  if (version != kVersion && version != kGravityVersion) {
+  if (version != kVersion && version != kGravityVersion && version != kGrowthVersion) {
     damaged(function, source, "version " + std::to_string(version),
-            "unsupported version (this build reads versions " + std::to_string(kVersion) + " and " +
-                std::to_string(kGravityVersion) + ")");
+            "unsupported version (this build reads versions " + std::to_string(kVersion) + ", " +
+                std::to_string(kGravityVersion) + " and " + std::to_string(kGrowthVersion) + ")");
   }
   const std::uint64_t size = get_unsigned(header + 12, 8);
   const std::uint64_t checksum = get_unsigned(header + 20, 8);
@@ -126,6 +129,12 @@ std::string World::Impl::save_payload() const {
   if (gravity_on) {
     out.vec2(def.gravity);
     out.f64(def.rest_height);
+  }
+  if (growth_on) {
+    out.f64(def.growth_rate);
+    out.f64(growth_relative);
+    out.f64(growth_start);
+    out.f64(growth_regrid_time);
   }
 
   out.f64(time);
@@ -220,9 +229,13 @@ std::string World::Impl::save_payload() const {
   return out.bytes();
 }
 
+std::uint32_t World::Impl::save_version() const {
+  if (gravity_on) return kGravityVersion;
+  return growth_on ? kGrowthVersion : kVersion;
+}
+
 void World::save(std::ostream& out) const {
-  const std::string bytes =
-      framed(impl_->save_payload(), impl_->gravity_on ? kGravityVersion : kVersion);
+  const std::string bytes = framed(impl_->save_payload(), impl_->save_version());
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   out.flush();
   if (!out) {
@@ -232,8 +245,7 @@ void World::save(std::ostream& out) const {
 
 void World::save(const std::filesystem::path& path) const {
   try {
-    write_file_atomically(
-        path, framed(impl_->save_payload(), impl_->gravity_on ? kGravityVersion : kVersion));
+    write_file_atomically(path, framed(impl_->save_payload(), impl_->save_version()));
   } catch (const FileError& error) {
     throw InvalidArgument("World::save", "path", path.string(), error.reason());
   }
@@ -265,6 +277,26 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
     }
     gravity_on = true;
   }
+  if (version == kGrowthVersion) {
+    def.growth_rate = in.f64("def.growth_rate");
+    if (!(def.growth_rate > 0.0 && std::isfinite(def.growth_rate))) {
+      in.inconsistent("def.growth_rate", number_text(def.growth_rate), "must be finite, > 0");
+    }
+    growth_relative = in.f64("growth relative rate");
+    if (!(growth_relative > 0.0 && std::isfinite(growth_relative))) {
+      in.inconsistent("growth relative rate", number_text(growth_relative), "must be finite, > 0");
+    }
+    growth_start = in.f64("growth start");
+    if (!std::isfinite(growth_start)) {
+      in.inconsistent("growth start", number_text(growth_start), "must be finite");
+    }
+    growth_regrid_time = in.f64("growth re-planning time");
+    if (std::isnan(growth_regrid_time)) {
+      in.inconsistent("growth re-planning time", "NaN", "must be a time");
+    }
+    growth_on = true;
+  }
+  general_motion = gravity_on || growth_on;
   if (def.boundary != Boundary::open && !(finite(def.lower) && finite(def.upper) &&
                                           def.upper.x > def.lower.x && def.upper.y > def.lower.y)) {
     in.inconsistent("def.upper", vector_text(def.upper),

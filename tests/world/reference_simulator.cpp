@@ -41,6 +41,14 @@ bool is_immovable(const ReferenceBall& ball) { return std::isinf(ball.mass); }
 
 bool has_gravity(const ReferenceScene& scene) { return scene.gravity != Vec2{}; }
 
+bool has_growth(const ReferenceScene& scene) {
+  return std::any_of(scene.balls.begin(), scene.balls.end(),
+                     [](const ReferenceBall& ball) { return ball.growth != 0.0; });
+}
+
+// Gravity or growth: the contact times then come from the Motion queries.
+bool has_motion_law(const ReferenceScene& scene) { return has_gravity(scene) || has_growth(scene); }
+
 // The offset (−length, 0 or +length) that brings a separation d in (−length, length) to the
 // nearest image, |d − offset| <= length / 2.
 double nearest_image_offset(double d, double length) {
@@ -132,7 +140,8 @@ double ReferenceSimulator::lookahead() const {
   double fastest = 0.0;
   double largest_radius = 0.0;
   for (const ReferenceBall& ball : scene_.balls) {
-    fastest = std::max(fastest, length(ball.velocity));
+    // (A growing ball's surface moves at most its speed plus its growth.)
+    fastest = std::max(fastest, length(ball.velocity) + ball.growth);
     largest_radius = std::max(largest_radius, ball.radius);
   }
   const double pull = length(scene_.gravity);
@@ -169,15 +178,17 @@ void ReferenceSimulator::consider_pair(std::size_t i, std::size_t j, double hori
   const Vec2 acceleration_b = acceleration_of(b);
   // They close at most at the sum of their speeds, plus half the sum of their accelerations'
   // magnitudes times the window squared.
-  const double reach = a.radius + b.radius + (speeds[i] + speeds[j]) * horizon +
+  const double reach = a.radius + b.radius +
+                       (speeds[i] + speeds[j] + a.growth + b.growth) * horizon +
                        0.5 * (length(acceleration_a) + length(acceleration_b)) * horizon * horizon;
   if (length_squared(b_center - a.position) > reach * reach * (1.0 + kReachSlack)) return;
-  const Impact impact = has_gravity(scene_)
-                            ? time_of_impact_ball_ball(
-                                  {a.position, a.radius}, Motion{a.velocity, acceleration_a},
-                                  {b_center, b.radius}, Motion{b.velocity, acceleration_b}, horizon)
-                            : time_of_impact_ball_ball({a.position, a.radius}, a.velocity,
-                                                       {b_center, b.radius}, b.velocity, horizon);
+  const Impact impact =
+      has_motion_law(scene_)
+          ? time_of_impact_ball_ball(
+                {a.position, a.radius}, Motion{a.velocity, acceleration_a, a.growth},
+                {b_center, b.radius}, Motion{b.velocity, acceleration_b, b.growth}, horizon)
+          : time_of_impact_ball_ball({a.position, a.radius}, a.velocity, {b_center, b.radius},
+                                     b.velocity, horizon);
   if (!impact.hit) return;
   const Candidate candidate{true, impact.t, ContactKind::ball_ball, i, j, impact.normal};
   if (comes_before(candidate, best)) best = candidate;
@@ -190,8 +201,8 @@ void ReferenceSimulator::consider_wall(std::size_t i, std::size_t w, double hori
   const ReferenceWall& wall = scene_.walls[w];
   const Ball disc{ball.position, ball.radius};
   Impact impact;
-  if (has_gravity(scene_)) {
-    const Motion motion{ball.velocity, scene_.gravity};
+  if (has_motion_law(scene_)) {
+    const Motion motion{ball.velocity, scene_.gravity, ball.growth};
     impact = wall.is_arc ? time_of_impact_ball_arc(disc, motion, wall.arc, horizon)
                          : time_of_impact_ball_segment(disc, motion, wall.segment, horizon);
   } else {
@@ -227,6 +238,7 @@ void ReferenceSimulator::advance(double dt) {
     } else {
       ball.position += ball.velocity * dt;
     }
+    ball.radius += ball.growth * dt;
     if (scene_.periodic) {
       ball.position = {wrap(ball.position.x, scene_.lower.x, scene_.upper.x),
                        wrap(ball.position.y, scene_.lower.y, scene_.upper.y)};
@@ -246,6 +258,20 @@ void ReferenceSimulator::resolve(const Candidate& contact) {
     ReferenceBall& b = scene_.balls[contact.b];
     record.b = contact.b;
     record.approach_speed = dot(a.velocity - b.velocity, contact.normal);
+    if (has_growth(scene_)) {
+      // The gap closes by the approach and both growths; the impulse reverses that, times e.
+      const double closing = record.approach_speed + a.growth + b.growth;
+      const double inverse_a = is_immovable(a) ? 0.0 : 1.0 / a.mass;
+      const double inverse_b = is_immovable(b) ? 0.0 : 1.0 / b.mass;
+      const double e = combined_restitution(a.restitution, b.restitution);
+      const double impulse = (1.0 + e) * closing / (inverse_a + inverse_b);
+      a.velocity -= contact.normal * (impulse * inverse_a);
+      b.velocity += contact.normal * (impulse * inverse_b);
+      record.approach_speed = closing;
+      record.impulse = impulse;
+      contacts_.push_back(record);
+      return;
+    }
     if (has_gravity(scene_)) refuse_resting(record, length(a.velocity - b.velocity));
     const BounceResult result = bounce(a.velocity, a.mass, b.velocity, b.mass, contact.normal,
                                        combined_restitution(a.restitution, b.restitution));
@@ -255,6 +281,15 @@ void ReferenceSimulator::resolve(const Candidate& contact) {
   } else {
     record.wall = contact.b;
     record.approach_speed = dot(a.velocity, contact.normal);
+    if (has_growth(scene_)) {
+      const double closing = record.approach_speed + a.growth;
+      const double change = (1.0 + a.restitution) * closing;
+      a.velocity -= contact.normal * change;
+      record.approach_speed = closing;
+      record.impulse = is_immovable(a) ? 0.0 : change * a.mass;
+      contacts_.push_back(record);
+      return;
+    }
     const ReferenceWall& wall = scene_.walls[contact.b];
     // The inside of an arc (a ball in a bowl) has its own bounce: the contact's normal points
     // straight out from the arc's centre there, and elsewhere (its outside, an end point) not.

@@ -5,7 +5,10 @@
 // moves every ball to that time and bounces. O(N²) per contact: slow and obviously right.
 // Under gravity every movable ball follows its parabola and the contact times come from the core's
 // accelerated queries (carom::Motion); with zero gravity the straight-line queries and moves
-// alone are used, so a scene without gravity runs bit for bit as a straight-line one.
+// alone are used, so a scene without gravity runs bit for bit as a straight-line one. A ball may
+// grow at a constant speed (its radius r + growth·t, WorldDef::growth_rate's law); its contact
+// times then come from the same queries with the growth in the Motion, and a contact reverses
+// the closing of the gap (the normal approach plus the growth speeds) times the restitution.
 #pragma once
 
 #include <array>
@@ -29,6 +32,7 @@ struct ReferenceBall {
   double radius = 1.0;
   double mass = 1.0;  // > 0, or kImmovable (then the velocity must be zero)
   double restitution = 1.0;
+  double growth = 0.0;  // radius per time unit (0 for an immovable ball)
 };
 
 struct ReferenceWall {

@@ -127,6 +127,7 @@ ReferenceScene scene_at_world_time(const ReferenceScene& scene, const SceneWorld
   for (std::size_t i = 0; i < now.balls.size(); ++i) {
     now.balls[i].position = built.world.position(built.ids[i]);
     now.balls[i].velocity = built.world.velocity(built.ids[i]);
+    now.balls[i].radius = built.world.radius(built.ids[i]);  // (a growing ball's of now)
   }
   return now;
 }

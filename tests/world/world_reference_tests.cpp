@@ -760,5 +760,73 @@ TEST(WorldReference, BoxGasStepByStepLong) {
   EXPECT_GT(contacts, 1000u);
 }
 
+// ---- growth ----------------------------------------------------------------------------------
+
+// The scene with every movable ball growing as WorldDef::growth_rate `rate` makes it grow from
+// time 0: at the speed radius·rate.
+ReferenceScene growing(ReferenceScene scene, double rate) {
+  for (testing::ReferenceBall& ball : scene.balls) {
+    if (!std::isinf(ball.mass)) ball.growth = ball.radius * rate;
+  }
+  return scene;
+}
+
+SceneWorld build_growing_world(const ReferenceScene& scene, double rate) {
+  SceneWorld built = testing::build_world(scene);
+  built.world.set_growth_rate(rate);
+  return built;
+}
+
+constexpr double kGrowthRate = 0.05;
+constexpr std::size_t kGrowthContactsCompared = 1500;
+
+// Growing disks in a periodic cell: each contact at the closed-form time of the growing gap, each
+// bounce adding the growth speeds to the parting; the speed scale follows the balls as growth
+// speeds them up.
+TEST(WorldReference, GrowthPeriodicGasContactByContact) {
+  const GasOptions options = fast_gas(120, 60.0, true);
+  const ReferenceScene scene = growing(testing::random_gas(options, 301), kGrowthRate);
+  SceneWorld built = build_growing_world(scene, kGrowthRate);
+  expect_contact_by_contact_under_gravity(built, scene, kGrowthContactsCompared,
+                                          tolerances_for(options));
+}
+
+// Growing fast, so that the balls outgrow the grid's cells and it is re-planned on the way
+// (radii × 2.3 over the contacts compared).
+TEST(WorldReference, FastGrowthPeriodicGasContactByContactAcrossReplannedGrids) {
+  const GasOptions options = fast_gas(120, 60.0, true);
+  const double rate = 40.0;
+  const ReferenceScene scene = growing(testing::random_gas(options, 304), rate);
+  SceneWorld built = build_growing_world(scene, rate);
+  expect_contact_by_contact_under_gravity(built, scene, kGrowthContactsCompared,
+                                          tolerances_for(options));
+  const BallId first = built.ids[0];
+  EXPECT_GT(built.world.radius(first), 2.0 * scene.balls[0].radius) << built.world.time();
+}
+
+// The same in a box: growing balls against its walls.
+TEST(WorldReference, GrowthBoxGasContactByContact) {
+  const GasOptions options = fast_gas(120, 60.0, false);
+  const ReferenceScene scene = growing(testing::random_gas(options, 302), kGrowthRate);
+  SceneWorld built = build_growing_world(scene, kGrowthRate);
+  expect_contact_by_contact_under_gravity(built, scene, kGrowthContactsCompared,
+                                          tolerances_for(options));
+}
+
+// Step by step: between contacts both move every ball and grow every radius alike (half steps
+// over 4 time units, radii × 1.2, each step end in mid-flight).
+TEST(WorldReference, GrowthBoxGasStepByStep) {
+  GasOptions options;
+  options.ball_count = 36;
+  options.side = 20.0;
+  options.max_speed = 8.0;
+  const ReferenceScene scene = growing(testing::random_gas(options, 303), kGrowthRate);
+  SceneWorld built = build_growing_world(scene, kGrowthRate);
+  std::size_t contacts = 0;
+  expect_step_by_step_under_gravity(built, scene, 0.5 * kReferenceStep, 480,
+                                    gravity_tolerances(options.side, options.max_speed), contacts);
+  EXPECT_GT(contacts, 100u);
+}
+
 }  // namespace
 }  // namespace carom

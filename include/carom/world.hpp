@@ -271,6 +271,10 @@ class World {
   // are now (t₀ becomes now). Throws InvalidArgument for a rate other than 0 while gravity is
   // on (and set_gravity for gravity while a world grows).
   void set_growth_rate(double rate);
+  // The growth rate relative to the radii of now that continues the same growth (every radius at
+  // the same speed): growth_rate / (1 + growth_rate·(t − t₀)); 0 without growth. A world saved
+  // as a scene carries it, with the radii of now.
+  [[nodiscard]] double growth_rate_from_now() const noexcept;
 
   // ---- changing balls between steps ----
   void set_velocity(BallId id, Vec2 velocity);

@@ -75,7 +75,7 @@ WorldDef read_settings(const ObjectFields& fields) {
   if (!fields.has("world")) return settings;
   const ObjectFields w(fields.source(), fields.at("world"), fields.path_of("world"),
                        {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size",
-                        "gravity", "rest_height"});
+                        "gravity", "rest_height", "growth_rate"});
   const std::string boundary = w.optional_string("boundary").value_or("open");
   if (boundary == "open") {
     settings.boundary = Boundary::open;
@@ -107,6 +107,10 @@ WorldDef read_settings(const ObjectFields& fields) {
   settings.cell_size = non_negative(w, "cell_size", 0.0);
   settings.gravity = w.optional_vector("gravity").value_or(Vec2{});
   settings.rest_height = positive(w, "rest_height", WorldDef{}.rest_height);
+  settings.growth_rate = non_negative(w, "growth_rate", 0.0);
+  if (settings.growth_rate != 0.0 && settings.gravity != Vec2{}) {
+    w.fail("growth_rate", "must be 0 when gravity is set: balls grow or fall, not both");
+  }
   return settings;
 }
 

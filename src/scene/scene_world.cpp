@@ -170,12 +170,15 @@ Scene capture_scene(const SceneWorld& sw) {
   scene.world.gravity = sw.world.def().gravity;
   // The world's own settings are what it ran with, whatever the scene it came from said.
   scene.world.rest_height = sw.world.def().rest_height;
+  // Growth continues from the radii of now at the rate relative to them, the same law.
+  scene.world.growth_rate = sw.world.growth_rate_from_now();
   for (std::size_t i = 0; i < sw.balls.size(); ++i) {
     const BallId id = sw.balls[i];
     if (id.is_null() || !sw.world.contains(id)) continue;
     SceneBall ball = sw.scene.balls[i];
     ball.position = sw.world.position(id);
     ball.velocity = sw.world.velocity(id);
+    ball.radius = sw.world.radius(id);
     scene.balls.push_back(ball);
   }
   return scene;

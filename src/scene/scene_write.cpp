@@ -141,6 +141,7 @@ std::string to_json_text(const Scene& scene) {
   if (any_bit_set(w.gravity)) world.add("gravity", vec(w.gravity));
   // Only when not the world's default, so that a scene that leaves it out writes no key either.
   if (w.rest_height != WorldDef{}.rest_height) world.add("rest_height", num(w.rest_height));
+  if (w.growth_rate != 0.0) world.add("growth_rate", num(w.growth_rate));
   out += ",\n  \"world\": " + world.done();
   out += ",\n  \"time\": " + num(scene.time);
   write_array(out, "balls", scene.balls, ball_line);

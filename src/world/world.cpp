@@ -469,6 +469,12 @@ void World::set_growth_rate(double rate) {
   w.events_valid = false;
 }
 
+double World::growth_rate_from_now() const noexcept {
+  const Impl& w = *impl_;
+  if (!w.growth_on) return 0.0;
+  return w.growth_relative / (1.0 + w.growth_relative * (w.time - w.growth_start));
+}
+
 void World::set_velocity(BallId id, Vec2 velocity) {
   constexpr const char* kFunction = "World::set_velocity";
   const std::uint32_t slot = impl_->slot_of(kFunction, id);

@@ -308,6 +308,18 @@ TEST(InfoCommand, ARestHeightSetInTheSceneIsNamed) {
   EXPECT_THAT(run_carom({"info", example("gravity-drop.json")}).out, Not(HasSubstr("rest height")));
 }
 
+TEST(InfoCommand, AGrowthRateIsNamed) {
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "grow.json", R"({
+    "world": {"boundary": "periodic", "lower": [0, 0], "upper": [10, 10], "growth_rate": 0.25},
+    "balls": [{"position": [5, 5]}]})");
+  const ToolRun text = run_carom({"info", scene});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("restitution 1, growth rate 0.25 a time unit\n"));
+  const ToolRun as_json = run_carom({"info", scene, "--json"});
+  EXPECT_EQ(nlohmann::json::parse(as_json.out)["growth_rate"].get<double>(), 0.25);
+}
+
 TEST(InfoCommand, WithoutGravityTheTextNamesNone) {
   const ToolRun text = run_carom({"info", example("newtons-cradle.json")});
   ASSERT_EQ(text.exit_code, 0) << text.err;

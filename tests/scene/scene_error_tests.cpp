@@ -299,6 +299,14 @@ TEST(SceneErrors, GeneratedNamesMayNotRepeat) {
   }
 }
 
+TEST(SceneErrors, GrowthRateIsNonNegativeAndNotWithGravity) {
+  const auto negative = error_of(R"({"world": {"growth_rate": -0.5}})");
+  EXPECT_EQ(negative.path, "world.growth_rate");
+  const auto with_gravity = error_of(R"({"world": {"growth_rate": 0.5, "gravity": [0, -1]}})");
+  EXPECT_EQ(with_gravity.path, "world.growth_rate");
+  EXPECT_THAT(with_gravity.problem, HasSubstr("grow or fall"));
+}
+
 TEST(SceneErrors, MissingField) {
   const auto d = error_of("{\"balls\": [{\"radius\": 1}]}");
   EXPECT_EQ(d.path, "balls[0].position");

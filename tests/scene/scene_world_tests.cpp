@@ -171,6 +171,29 @@ TEST(SceneWorld, ASettledPileSavedAsASceneLoadsBack) {
   }
 }
 
+TEST(SceneWorld, AGrowingSceneSavedMidwayContinuesTheSameGrowth) {
+  const Scene scene = parse_scene(R"({
+    "world": {"boundary": "periodic", "lower": [0, 0], "upper": [30, 30], "growth_rate": 0.1},
+    "balls": [{"position": [5, 5], "velocity": [1, 0.5], "radius": 1},
+              {"position": [20, 12], "velocity": [-0.5, 1], "radius": 0.5}]})");
+  EXPECT_EQ(scene.world.growth_rate, 0.1);
+  SceneWorld grown = make_world(scene);
+  run_scene_until(grown, 2.0);
+  EXPECT_NEAR(grown.world.radius(grown.balls[0]), 1.2, 1e-15);
+  // Saved at t = 2: the radii of now and the rate relative to them, 0.1 / 1.2.
+  const Scene saved = parse_scene(to_json_text(capture_scene(grown)));
+  EXPECT_DOUBLE_EQ(saved.world.growth_rate, 0.1 / 1.2);
+  EXPECT_EQ(saved.balls[1].radius, grown.world.radius(grown.balls[1]));
+  SceneWorld continued = make_world(saved);
+  run_scene_until(continued, 3.0);  // world time: scene time 5
+  run_scene_until(grown, 5.0);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(continued.world.radius(continued.balls[i]), grown.world.radius(grown.balls[i]),
+                1e-14);
+  }
+  EXPECT_NEAR(grown.world.radius(grown.balls[0]), 1.5, 1e-14);
+}
+
 // The scene's gravity is the world's, and the summary's potential energy is the world's: −Σ m·g·p
 // over movable balls (the immovable ball and the pocket do not count).
 TEST(SceneWorld, GravityReachesTheWorldAndTheSummary) {

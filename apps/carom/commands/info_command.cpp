@@ -54,6 +54,7 @@ int run(const InfoOptions& options) {
     json["total_energy"] = s.kinetic_energy + s.potential_energy;
     json["gravity"] = {scene.world.gravity.x, scene.world.gravity.y};
     json["rest_height"] = scene.world.rest_height;
+    json["growth_rate"] = scene.world.growth_rate;
     json["momentum"] = {s.momentum.x, s.momentum.y};
     if (s.smallest_gap) {
       json["smallest_gap"] = {
@@ -76,6 +77,9 @@ int run(const InfoOptions& options) {
           (gravity ? ", gravity " + readable(scene.world.gravity) : "") +
           (gravity && scene.world.rest_height != WorldDef{}.rest_height
                ? ", rest height " + readable(scene.world.rest_height) + " radii"
+               : "") +
+          (scene.world.growth_rate != 0.0
+               ? ", growth rate " + readable(scene.world.growth_rate) + " a time unit"
                : "") +
           "\n";
   text += "time              " + readable(scene.time) + "\n";

@@ -25,8 +25,8 @@ def velocity(speed_index, angle_fraction, axis=False):
     return bytes([speed_index]) + word(angle_fraction) + bytes([0 if axis else 1])
 
 
-def head(boundary, restitution_index=0, fixed_cell=False, gravity=False):
-    return bytes([boundary + 3 * restitution_index + (18 if gravity else 0) +
+def head(boundary, restitution_index=0, fixed_cell=False, gravity=False, growth=False):
+    return bytes([boundary + 3 * restitution_index + (18 if gravity else 0) + (36 if growth else 0) +
                   (0x80 if fixed_cell else 0)])
 
 
@@ -98,6 +98,12 @@ SEEDS = {
     + gas(10, 1) + step(6) + bytes([STOP, 1]) + step(7) + bytes([SAVE]) + step(7),
     "gravity_elastic_open": head(OPEN, 0, gravity=True) + walls(segment((1, 1), (19, 1))) + gas(12, 2) + collisions(8)
     + bytes([SAVE]) + step(4),
+    # Growth: a gas compressed in a periodic cell, and growing balls among walls and an arc in a box.
+    "growth_periodic_gas": head(PERIODIC, 0, growth=True) + gas(16, 1) + step(7) + bytes([SAVE]) + step(7)
+    + collisions(8),
+    "growth_in_box_with_walls": head(BOX, 0, growth=True)
+    + walls(segment((1, 12), (12, 6)), arc((10, 8), 5.0, 0.5, 5) + word(0.5)) + gas(10, 1) + step(6)
+    + bytes([SAVE]) + step(7) + add(10, 18, 4, 0.75) + step(7),
 }
 
 

@@ -14,7 +14,9 @@
 //
 // Input bytes, read front to back (missing bytes read as 0, so every input is valid):
 //   byte 0: boundary (open, box, periodic), the world's restitution and gravity (none, or, in an
-//   open world or a box, down at 9.81 with balls resting and sliding);
+//   open world or a box, down at 9.81 with balls resting and sliding) or, without gravity,
+//   growth (radii growing at 0.05 of themselves a time unit; energy is then pumped in, not
+//   checked);
 //   then up to kMaxWalls walls (non-periodic worlds), then up to kMaxCalls calls, one opcode
 //   byte each followed by its arguments. Counts, sizes and speeds are bounded so that one input
 //   runs in milliseconds; the call that brings the world's contacts to kMaxContacts is stopped
@@ -180,11 +182,14 @@ class Harness {
     // Gravity in an open world or a box. (In a periodic cell balls fall for ever, ever faster,
     // and a run of a few calls can take minutes of cell crossings: the reference tests cover it.)
     if ((choice / 18) % 2 == 1 && def_.boundary != Boundary::periodic) def_.gravity = {0.0, -9.81};
+    if ((choice / 36) % 2 == 1 && def_.gravity == Vec2{}) def_.growth_rate = 0.05;
     if ((head & 0x80) != 0) def_.cell_size = 4.0;  // a fixed grid as well as the chosen one
     world_.emplace(def_);
     install_stop_condition(*world_, 0);
-    CAROM_TRACE("World(boundary %d, restitution %g, cell_size %g, gravity %g)\n",
-                static_cast<int>(def_.boundary), def_.restitution, def_.cell_size, def_.gravity.y);
+    CAROM_TRACE("World(boundary %d, restitution %g, cell_size %g, gravity %g, growth %g)\n",
+                static_cast<int>(def_.boundary), def_.restitution, def_.cell_size, def_.gravity.y,
+                def_.growth_rate);
+    driven_ = def_.growth_rate != 0.0;  // growth pumps energy in
     elastic_ = def_.restitution == 1.0;
   }
 
@@ -386,10 +391,15 @@ class Harness {
     try {
       call(world());
     } catch (const carom::InvalidArgument& e) {
-      // Jammed balls and a stalled time are refused mid-run (docs/world.md, "Known limits"): the
-      // world must still be valid; the input ends, since its future is undefined.
+      // Jammed balls and a stalled time are refused mid-run (docs/world.md, "Known limits"), and
+      // so are balls grown too large for a periodic cell or packed until their contacts pile up:
+      // the world must still be valid; the input ends, since its future is undefined.
       const std::string what = e.what();
-      check(what.find("jammed") != std::string::npos || what.find("stalled") != std::string::npos,
+      const bool growing =
+          def_.growth_rate != 0.0 && (what.find("grown too large") != std::string::npos ||
+                                      what.find("piling up") != std::string::npos);
+      check(what.find("jammed") != std::string::npos || what.find("stalled") != std::string::npos ||
+                growing,
             "a run threw for a valid call");
       jammed_ = true;
       return;

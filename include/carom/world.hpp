@@ -275,6 +275,13 @@ class World {
   // the same speed): growth_rate / (1 + growth_rate·(t − t₀)); 0 without growth. A world saved
   // as a scene carries it, with the radii of now.
   [[nodiscard]] double growth_rate_from_now() const noexcept;
+  // A thermostat's step: scales every movable ball's velocity about the centre of mass's
+  // velocity (momentum kept) so that their kinetic energy relative to it is kT a ball (two
+  // degrees of freedom at ½·kT each); returns the work done, the change of kinetic energy.
+  // Growth pumps energy into a compression and this takes it out: call it every so often
+  // between steps. kT finite and > 0; a world whose balls do not move relative to their centre
+  // of mass has nothing to scale (returns 0).
+  double set_temperature(double kT);
 
   // ---- changing balls between steps ----
   void set_velocity(BallId id, Vec2 velocity);

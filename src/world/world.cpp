@@ -475,6 +475,44 @@ double World::growth_rate_from_now() const noexcept {
   return w.growth_relative / (1.0 + w.growth_relative * (w.time - w.growth_start));
 }
 
+double World::set_temperature(double kT) {
+  constexpr const char* kFunction = "World::set_temperature";
+  detail::require_finite(kFunction, "kT", kT);
+  detail::require_positive(kFunction, "kT", kT);
+  Impl& w = *impl_;
+  // Every ball to now (its velocity of now under gravity), then sums in handle order, as
+  // kinetic_energy does.
+  w.synchronize(w.time);
+  Vec2 momentum;
+  double mass = 0.0;
+  std::uint64_t count = 0;
+  for (const std::uint32_t i : w.slot_of_handle) {
+    if (!w.balls[i].alive() || !w.movable(i)) continue;
+    momentum += w.balls[i].velocity * w.species_of(i).mass;
+    mass += w.species_of(i).mass;
+    ++count;
+  }
+  if (count == 0) return 0.0;
+  const Vec2 drift = momentum / mass;
+  double relative = 0.0;
+  for (const std::uint32_t i : w.slot_of_handle) {
+    if (!w.balls[i].alive() || !w.movable(i)) continue;
+    relative += 0.5 * w.species_of(i).mass * length_squared(w.balls[i].velocity - drift);
+  }
+  if (!(relative > 0.0)) return 0.0;
+  const double before = kinetic_energy();
+  const double factor = std::sqrt(static_cast<double>(count) * kT / relative);
+  for (const std::uint32_t i : w.slot_of_handle) {
+    if (!w.balls[i].alive() || !w.movable(i)) continue;
+    BallSlot& b = w.balls[i];
+    b.velocity = drift + (b.velocity - drift) * factor;
+    ++b.version;
+    if (w.gravity_on) w.disturb(i);  // a resting ball that moves rests no more
+  }
+  w.events_valid = false;
+  return kinetic_energy() - before;
+}
+
 void World::set_velocity(BallId id, Vec2 velocity) {
   constexpr const char* kFunction = "World::set_velocity";
   const std::uint32_t slot = impl_->slot_of(kFunction, id);

@@ -163,5 +163,45 @@ TEST(WorldGrowth, BallsGrownPastAThirdOfTheCellAreRefused) {
   EXPECT_THROW(world.step(10.0), InvalidArgument);
 }
 
+TEST(WorldGrowth, SetTemperatureScalesVelocitiesAboutTheCentreOfMass) {
+  World world = growth_lattice(8, 20.0, 0.5, 0.0, 9);
+  const BallId mover = world.balls()[0];
+  world.set_velocity(mover, world.velocity(mover) + Vec2{3.0, -1.0});  // some momentum
+  const Vec2 momentum = world.momentum();
+  const double before = world.kinetic_energy();
+  const double work = world.set_temperature(2.5);
+  EXPECT_NEAR(work, world.kinetic_energy() - before, 1e-12 * before);
+  EXPECT_NEAR(world.momentum().x, momentum.x, 1e-12 * before);
+  EXPECT_NEAR(world.momentum().y, momentum.y, 1e-12 * before);
+  // Relative to the centre of mass, K = N·kT: the whole K less ½·M·V².
+  const double drift_energy = 0.5 * length_squared(momentum) / 64.0;
+  EXPECT_NEAR(world.kinetic_energy() - drift_energy, 64.0 * 2.5, 1e-9);
+  world.step(1.0);
+  EXPECT_FALSE(world.audit());
+  EXPECT_THROW(world.set_temperature(0.0), InvalidArgument);
+  EXPECT_THROW(world.set_temperature(std::nan("")), InvalidArgument);
+}
+
+TEST(WorldGrowth, AThermostattedCompressionReachesADenseStateAtTheTemperatureAsked) {
+  // 256 disks from η = 0.25, growing at 0.02 of their size a time unit, velocities rescaled to
+  // kT = 1 every 0.5: at t = 40 the radii are 1.8 times larger, η = 0.81, a dense solid, with
+  // no overlap, and each rescaling took out the work growth had put in.
+  const double side = 32.0;
+  const double radius = std::sqrt(0.25 * side * side / (256.0 * std::numbers::pi));
+  World world = growth_lattice(16, side, radius, 0.02, 11);
+  world.set_contact_recording(false);
+  double taken = 0.0;
+  for (int k = 0; k < 80; ++k) {
+    world.step(0.5);
+    taken -= world.set_temperature(1.0);
+    const double drift_energy = 0.5 * length_squared(world.momentum()) / 256.0;
+    ASSERT_NEAR(world.kinetic_energy() - drift_energy, 256.0, 1e-9) << "at t = " << world.time();
+  }
+  ASSERT_FALSE(world.audit()) << *world.audit();
+  EXPECT_GT(world.collision_count(), 20'000U);
+  EXPECT_NEAR(packing_fraction(world, side * side), 0.25 * 1.8 * 1.8, 1e-9);
+  EXPECT_GT(taken, 0.0);
+}
+
 }  // namespace
 }  // namespace carom

@@ -1,7 +1,8 @@
 // "Galton board": balls poured for a few seconds land in the bins; the histogram beside the board
 // counts exactly the balls landed and draws the binomial curve scaled to them; every landed ball
-// lies in the bin it was counted in and every ball stays in the box; the pour stops and starts,
-// and Reset empties the board.
+// lies in the bin it was counted in and every ball stays in the box; landed balls stay carom's
+// movable balls, some of them at rest under carom's resting contact; the pour stops and
+// starts, and Reset empties the board.
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
@@ -21,6 +22,10 @@ function state(page) {
     const g = window.caromGalton;
     const number = (key) => document.querySelector(`[data-readout="${key}"]`).textContent;
     const balls = g.ballIndex.map((i) => g.world.position(i));
+    const resting = g.ballIndex.filter((i, j) => {
+      const v = g.world.velocity(i);
+      return g.landedBin[j] >= 0 && v.x === 0 && v.y === 0;
+    }).length;
     return {
       bars: [...document.querySelectorAll('#histogram rect.bar')].map((b) => Number(b.dataset.count)),
       expected: [...document.querySelectorAll('#histogram circle.binomial')]
@@ -31,6 +36,8 @@ function state(page) {
       counts: g.counts,
       landedBin: g.landedBin,
       balls,
+      resting,
+      fixed: g.fixed,
       box: {lower: g.board.lower, upper: g.board.upper},
       edges: g.board.bins.edges,
       binTop: g.board.bins.top,
@@ -70,6 +77,10 @@ test('poured balls land in the bins and the histogram counts exactly the balls l
     assert.ok(p.x > s.edges[bin] && p.x < s.edges[bin + 1] && p.y < s.binTop,
               `ball ${j}, counted in bin ${bin}, is at (${p.x}, ${p.y})`);
   }
+  // No step refused, so no landed ball was fixed (replaced by an immovable one); the piles are
+  // movable balls that carom has brought to rest.
+  assert.equal(s.fixed, 0);
+  assert.ok(s.resting > 0, `${s.resting} of ${s.landed} landed balls at rest`);
   assert.equal(s.audit, '');
   await page.screenshot({path: `${OUTPUT}/galton-running.png`, fullPage: true});
   assert.deepEqual(problems, []);

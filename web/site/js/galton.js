@@ -1,9 +1,9 @@
 // "Galton board": balls poured into a hopper fall through rows of pegs under gravity and
 // come to rest in the bins below; beside the board, the count in each bin over the binomial curve
 // the geometry implies (galton_board.js). The falling, the bouncing (restitution 0.5) and the
-// coming to rest are carom's (carom::web::DrawnWorld over a carom::World with gravity); this page
-// chooses where to pour, counts where balls have landed, fixes balls that have come to rest in a
-// bin where they lie (below), and draws.
+// coming to rest, on the bins' floors and on each other, are carom's (carom::web::DrawnWorld over a
+// carom::World with gravity); this page chooses where to pour, counts where balls have landed, and
+// draws.
 import {attempt, carom} from './carom.js';
 import {packColour} from './disc_raster.js';
 import {num} from './format.js';
@@ -17,11 +17,10 @@ const FRAME_TIME = 1 / 60;  // simulated time per frame
 const GRAVITY = 30;
 const RESTITUTION = 0.5;
 const REST_HEIGHT = 1e-3;  // of a radius: carom's default, below anything the picture shows
-// A ball at rest in a bin becomes an immovable ball at its place, this much smaller, so that it
-// does not overlap its supports by the rounding of its resting place (carom refuses a ball added
-// overlapping anything). Why fix them at all: balls of restitution 0.5 landing on a pile of
-// movable resting balls make carom::World refuse a step (an inelastic collapse) within a few
-// dozen balls; on fixed balls they land as on pegs. docs/playground.md, "Galton board".
+// Should carom::World refuse a step (advance, below), every landed ball becomes an immovable ball
+// at its place, this much smaller, so that it does not overlap its supports by the rounding of its
+// resting place (carom refuses a ball added overlapping anything). docs/playground.md, "Galton
+// board".
 const FIXED_SHRINK = 1 - 1e-6;
 // Balls leave the pour spout downwards at this speed, so that at a few dozen a second each has
 // cleared the spot before the next is poured.
@@ -65,7 +64,7 @@ let world = null;
 let poured = 0;
 let landed = 0;
 // Per poured ball j, in the order poured: its index in the world (a new one once fixed), its bin
-// once landed (else -1), and whether it has been fixed.
+// once landed (else -1), and whether it has been fixed (after a refused step).
 let ballIndex = [];
 let landedBin = [];
 let fixed = [];
@@ -136,26 +135,20 @@ function pour() {
 // A ball has landed when it is below the bins' tops and too slow to climb back over them: its
 // kinetic energy is less than the potential energy of the climb, so only another ball could lift
 // it out, and a landed ball keeps its bin. balls: the world's snapshot (x, y, radius, speed).
-// Returns the landed balls that carom has brought to rest (speed 0), to be fixed.
 function land(balls) {
   const top = board.bins.top - BALL_RADIUS;
-  const resting = [];
   for (let j = 0; j < poured; ++j) {
-    if (fixed[j]) continue;
+    if (landedBin[j] >= 0) continue;
     const at = 4 * ballIndex[j];
-    if (landedBin[j] < 0) {
-      const climb = top - balls[at + 1];
-      const speed = balls[at + 3];
-      if (!(climb > 0 && speed * speed < 2 * GRAVITY * climb)) continue;
-      const bin = binOf(board, balls[at]);
-      landedBin[j] = bin;
-      ++counts[bin];
-      ++landed;
-      histogramStale = true;
-    }
-    if (balls[at + 3] === 0) resting.push(j);
+    const climb = top - balls[at + 1];
+    const speed = balls[at + 3];
+    if (!(climb > 0 && speed * speed < 2 * GRAVITY * climb)) continue;
+    const bin = binOf(board, balls[at]);
+    landedBin[j] = bin;
+    ++counts[bin];
+    ++landed;
+    histogramStale = true;
   }
-  return resting;
 }
 
 // Replaces poured ball j by an immovable ball where it is (FIXED_SHRINK says why).
@@ -177,9 +170,9 @@ function fix(j) {
 }
 
 // One frame of carom::World::step. If the World refuses it (an inelastic collapse, or balls
-// jammed: docs/world.md, "Known limits"), every landed ball is fixed where it is, slowing or
-// not, and the rest of the frame is tried once more; a second refusal stops the board, with the
-// World's message on the page.
+// jammed: docs/world.md, "Known limits"; no pour measured refuses one, docs/playground.md), every
+// landed ball is fixed where it is, slowing or not, and the rest of the frame is tried once more;
+// a second refusal stops the board, with the World's message on the page.
 function advance() {
   const start = world.time();
   try {
@@ -299,7 +292,7 @@ function frame(now) {
     pour();
     const start = performance.now();
     advance();
-    for (const j of land(world.snapshot())) fix(j);
+    land(world.snapshot());
     keep(stats.step, performance.now() - start);
   }
   const drawStart = performance.now();

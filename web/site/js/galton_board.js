@@ -20,7 +20,7 @@ export const PEG_RADIUS = 0.2;
 // A gap between two pegs of a row is 0.6, twice a ball across: two balls arriving together do
 // not wedge in it.
 export const BALL_RADIUS = 0.15;
-// Deep enough for the fullest bin of MAX_BALLS (measured: about 110 balls, piled about 10 high).
+// Deep enough for the fullest bin of MAX_BALLS (measured: up to 119 balls, piled 12 high).
 const BIN_DEPTH = 13;
 // Between the last row of pegs and the dividers' tops (each divider stands under one of the last
 // row's pegs), so that the last peg's deflection is over before a ball meets a divider.
@@ -85,8 +85,8 @@ export function galtonBoard(rows = ROWS) {
     arcs,
     bins: {edges, top: binTop},
     // Where balls are poured in: over the outlet, narrower than it, so that a ball falls through
-    // without touching the hopper. (Balls sliding down its sides side by side can make the
-    // World refuse a step as an inelastic collapse; docs/playground.md.)
+    // without touching the hopper (balls poured onto its sides overfill the middle bins;
+    // docs/playground.md).
     pour: {x0: -(SPACING / 2 - 2 * BALL_RADIUS), x1: SPACING / 2 - 2 * BALL_RADIUS,
            y: rimY + POUR_HEADROOM / 2},
   };

@@ -5,6 +5,8 @@
 //   registered only when the environment variable CAROM_BENCH_WORLD_LARGE is set (to anything).
 // - BM_WorldGasInABox: the same disks, elastic, in a closed box, with and without gravity (a
 //   scale height kT/(m·g) of half the box's side): what gravity's parabolas cost a collision.
+// - BM_WorldGrowingGas: the periodic gas of BM_WorldHardDisks at 10⁴ and η = 0.3, its radii
+//   growing slowly (or not): what growth costs a collision.
 // - BM_WorldGameStep: a game's frame, 10⁴ balls of mixed sizes in a closed box stepped at 60
 //   steps per second; the mean step time and the worst.
 // - BM_WorldGameDragStep: the same with the player dragging one ball every frame (set_position
@@ -162,6 +164,21 @@ BENCHMARK(BM_WorldGasInABox)
     ->Args({10'000, 35, 0})
     ->Args({10'000, 35, 1})
     ->Unit(benchmark::kMillisecond);
+
+// The gas of `carom bench` (10⁴ disks, η = 0.3), with growth at 10⁻⁴ of the radii a time unit
+// (η rises by about 10⁻³ over a run) or none; a fresh gas for each run. Items are collisions.
+void BM_WorldGrowingGas(benchmark::State& state) {
+  const bool growing = state.range(0) != 0;
+  const science::HardDiskLayout layout = science::hard_disk_layout(10'000, 0.3);
+  World world = science::make_hard_disk_world(layout, kGasSeed);
+  world.set_contact_recording(false);
+  world.run_collisions(kEquilibrationPerBall * 10'000);
+  if (growing) world.set_growth_rate(1e-4);
+  std::uint64_t collisions = 0;
+  for (auto _ : state) collisions += world.run_collisions(10'000);
+  state.SetItemsProcessed(static_cast<std::int64_t>(collisions));
+}
+BENCHMARK(BM_WorldGrowingGas)->ArgName("growing")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // ---- a game's frame -----------------------------------------------------------------------
 

@@ -12,6 +12,7 @@
 
 #include "core/accelerated_sweep.hpp"
 #include "core/circle_crossing.hpp"
+#include "core/growing_pair.hpp"
 #include "engine_tuning.hpp"
 #include "pair_batch.hpp"
 #include "world_impl.hpp"
@@ -232,6 +233,18 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
         limit * (length(v - other_velocity) + 0.5 * length(a - other_acceleration) * limit +
                  growth + other_growth);
     if (length(offset) - reach > 1.0000001 * travel) return;
+    if (other_acceleration == a) {
+      // Growing balls in straight-line motion: the pair equation's closed form, where it is
+      // clear of its rounding (else the certified isolation below decides).
+      const detail::GrowingPairClosing closing =
+          detail::growing_pair_closing(offset, v - other_velocity, reach, growth + other_growth);
+      if (closing.decided) {
+        if (closing.found && closing.t <= limit) {
+          consider(closing.t, EventKind::ball_ball, other, o.version);
+        }
+        return;
+      }
+    }
     const Impact impact = detail::accelerated_ball_ball(
         Ball{offset, radius}, motion, Ball{{}, other_radius},
         Motion{other_velocity, other_acceleration, other_growth}, limit);

@@ -144,7 +144,7 @@ std::uint64_t World::Impl::run(const char* function, RunGoal goal, double end,
     if (growth_on && event.time > growth_regrid_time && growth_regrid_time <= end) [[unlikely]] {
       // The largest ball outgrows the cells before this event: the grid is re-planned then, and
       // every prediction renewed.
-      regrid_for_growth(growth_regrid_time);
+      regrid_for_growth(std::max(growth_regrid_time, time));  // (never back in time)
       continue;
     }
     if (!(event.time <= end) || event.time == kInfinity) {

@@ -281,4 +281,52 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   queue.set(ball, best);
 }
 
+bool World::Impl::process_general(const Event& event) {
+  const std::uint32_t i = event.owner;
+  switch (event.kind) {
+    case EventKind::ball_ball: {
+      const std::uint32_t j = event.partner;
+      if (!balls[j].alive() || balls[j].version != event.partner_version) {
+        advance(i, event.time);
+        predict(i);
+        return false;
+      }
+      return gravity_on ? resolve_pair_under_gravity(i, j, event.time)
+                        : resolve_pair_under_growth(i, j, event.time);
+    }
+    case EventKind::ball_wall:
+      return gravity_on ? resolve_wall_under_gravity(i, event.partner, event.time)
+                        : resolve_wall_under_growth(i, event.partner, event.time);
+    case EventKind::cell_crossing:
+      cross_cell(i, event.partner, event.time, false);
+      return false;
+    case EventKind::release:
+      // (Under gravity only.) A sliding ball past its support's end (or off a curved support's
+      // tangent): it falls.
+      advance(i, event.time);
+      disturb(i);
+      ++balls[i].version;
+      predict(i);
+      return false;
+  }
+  return false;
+}
+
+World::Impl::WallTouch World::Impl::touch_wall(std::uint32_t ball, std::uint32_t wall,
+                                               double t) const {
+  const BallSlot& b = balls[ball];
+  const Ball shape{b.position, radius_at(ball, t)};
+  const Motion motion = motion_of(ball);
+  Impact now = detail::time_of_impact(walls[wall], shape, motion, 0.0);
+  if (!now.hit) {
+    // A contact a sliver ahead that the motion cannot reach (resolve_ball_wall says why), or
+    // that the world's clock cannot (a time below its rounding: the event came up now).
+    const Impact ahead = detail::time_of_impact(walls[wall], shape, motion, kFarFuture);
+    if (ahead.hit && (ahead.a_at == b.position || t + ahead.t == t)) now = ahead;
+  }
+  const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], b.position);
+  const Vec2 normal = now.hit ? now.normal : normalized(point - b.position);
+  return {now, point, normal};
+}
+
 }  // namespace carom

@@ -17,8 +17,6 @@
 namespace carom {
 
 using detail::BallSlot;
-using detail::Event;
-using detail::EventKind;
 using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the engine's constants
 
 namespace {
@@ -89,29 +87,6 @@ void World::Impl::regrid_for_growth(double t) {
   predict_all();
 }
 
-bool World::Impl::process_under_growth(const Event& event) {
-  const std::uint32_t i = event.owner;
-  switch (event.kind) {
-    case EventKind::ball_ball: {
-      const std::uint32_t j = event.partner;
-      if (!balls[j].alive() || balls[j].version != event.partner_version) {
-        advance(i, event.time);
-        predict(i);
-        return false;
-      }
-      return resolve_pair_under_growth(i, j, event.time);
-    }
-    case EventKind::ball_wall:
-      return resolve_wall_under_growth(i, event.partner, event.time);
-    case EventKind::cell_crossing:
-      cross_cell(i, event.partner, event.time, false);
-      return false;
-    case EventKind::release:  // (under gravity only)
-      return false;
-  }
-  return false;
-}
-
 bool World::Impl::resolve_pair_under_growth(std::uint32_t i, std::uint32_t j, double t) {
   advance(i, t);
   advance(j, t);
@@ -153,17 +128,7 @@ bool World::Impl::resolve_pair_under_growth(std::uint32_t i, std::uint32_t j, do
 bool World::Impl::resolve_wall_under_growth(std::uint32_t i, std::uint32_t wall, double t) {
   advance(i, t);
   BallSlot& a = balls[i];
-  const Ball shape{a.position, radius_at(i, t)};
-  const Motion motion = motion_of(i);
-  Impact now = detail::time_of_impact(walls[wall], shape, motion, 0.0);
-  if (!now.hit) {
-    // A contact a sliver ahead that the motion cannot reach, or that the world's clock cannot
-    // (resolve_ball_wall says why): it is a contact now.
-    const Impact ahead = detail::time_of_impact(walls[wall], shape, motion, kFarFuture);
-    if (ahead.hit && (ahead.a_at == a.position || t + ahead.t == t)) now = ahead;
-  }
-  const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
-  const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
+  const auto [now, point, normal] = touch_wall(i, wall, t);
   // Inside a bowl too the gap closes at the approach plus the growth, which is never 0: a plain
   // bounce answers (no turn along the wall).
   const double closing = dot(a.velocity, normal) + growth_of(i);
@@ -172,17 +137,7 @@ bool World::Impl::resolve_wall_under_growth(std::uint32_t i, std::uint32_t wall,
     const double restitution = collided_recently(i, t) ? 1.0 : restitution_of(i);
     const double speed_change = detail::wall_speed_change(closing, restitution);
     a.velocity -= normal * speed_change;
-    if (def.collapse_time > 0.0) last_contact_times[i] = t;
-    ContactEvent contact;
-    contact.time = t;
-    contact.kind = ContactKind::ball_wall;
-    contact.a = id_of(i);
-    contact.wall = wall;
-    contact.point = point;
-    contact.normal = normal;
-    contact.approach_speed = closing;
-    contact.impulse = movable(i) ? speed_change * species_of(i).mass : 0.0;
-    record(contact);
+    record_ball_wall(i, wall, t, point, normal, closing, speed_change);
     resolved = true;
     ++a.version;
   }

@@ -261,7 +261,6 @@ struct World::Impl : detail::BallStore {
   // The grid re-planned at its due time t (every ball brought to t, radii settled, predictions
   // renewed), with room for the balls to grow into.
   void regrid_for_growth(double t);
-  bool process_under_growth(const detail::Event& event);
   bool resolve_pair_under_growth(std::uint32_t i, std::uint32_t j, double t);
   bool resolve_wall_under_growth(std::uint32_t i, std::uint32_t wall, double t);
 
@@ -302,7 +301,17 @@ struct World::Impl : detail::BallStore {
   // inelastic one meets a ball already in a slow contact at this instant (a press handed back
   // and forth), or when there have been too many at one instant.
   bool jammed(double t, std::uint32_t i, std::uint32_t j, bool inelastic);
-  bool process_under_gravity(const detail::Event& event);
+  // An event under gravity or growth: each contact by its law's resolve.
+  bool process_general(const detail::Event& event);
+  // A ball's contact with a wall confirmed at t (the ball brought to t) under gravity or
+  // growth: the query's contact now, or one a sliver ahead that the motion or the clock cannot
+  // reach; with the touched point and the normal (towards the wall) either way.
+  struct WallTouch {
+    Impact now;
+    Vec2 point;
+    Vec2 normal;
+  };
+  [[nodiscard]] WallTouch touch_wall(std::uint32_t ball, std::uint32_t wall, double t) const;
   bool resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, double t);
   bool resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall, double t);
   // predict for a contact's two balls, i's slot set first (world_prediction.cpp).
@@ -387,6 +396,10 @@ struct World::Impl : detail::BallStore {
   void record_ball_ball(std::uint32_t i, std::uint32_t j, double t, Vec2 between, Vec2 normal,
                         double approach, double impulse, double share = -1.0);
   bool resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double t);
+  // Records a ball's contact with a wall (and its time, for collapse_time); the impulse is the
+  // speed change times the mass (0 for an immovable ball).
+  void record_ball_wall(std::uint32_t i, std::uint32_t wall, double t, Vec2 point, Vec2 normal,
+                        double approach, double speed_change);
   // A ball leaving its cell through `side` at t: moved to the next cell and predicted, looking only
   // at the cells the crossing brings into reach where its last prediction found no contact
   // around it (clear_behind; docs/engine.md, "Crossing a cell").

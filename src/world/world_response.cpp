@@ -45,7 +45,7 @@ CAROM_ALWAYS_INLINE inline Vec2 unit_along(Vec2 d) {
 
 bool World::Impl::process(const Event& event) {
   if (general_motion) [[unlikely]]
-    return gravity_on ? process_under_gravity(event) : process_under_growth(event);
+    return process_general(event);
   const std::uint32_t i = event.owner;
   switch (event.kind) {
     case EventKind::ball_ball: {
@@ -154,22 +154,27 @@ bool World::Impl::resolve_ball_wall(std::uint32_t i, std::uint32_t wall, double 
       speed_change = detail::wall_speed_change(approach, restitution);
       a.velocity -= normal * speed_change;
     }
-    if (def.collapse_time > 0.0) last_contact_times[i] = t;
-    ContactEvent contact;
-    contact.time = t;
-    contact.kind = ContactKind::ball_wall;
-    contact.a = id_of(i);
-    contact.wall = wall;
-    contact.point = point;
-    contact.normal = normal;
-    contact.approach_speed = approach;
-    contact.impulse = movable(i) ? speed_change * species_of(i).mass : 0.0;
-    record(contact);
+    record_ball_wall(i, wall, t, point, normal, approach, speed_change);
     resolved = true;
     ++a.version;
   }
   predict(i);
   return resolved;
+}
+
+void World::Impl::record_ball_wall(std::uint32_t i, std::uint32_t wall, double t, Vec2 point,
+                                   Vec2 normal, double approach, double speed_change) {
+  if (def.collapse_time > 0.0) last_contact_times[i] = t;
+  ContactEvent contact;
+  contact.time = t;
+  contact.kind = ContactKind::ball_wall;
+  contact.a = id_of(i);
+  contact.wall = wall;
+  contact.point = point;
+  contact.normal = normal;
+  contact.approach_speed = approach;
+  contact.impulse = movable(i) ? speed_change * species_of(i).mass : 0.0;
+  record(contact);
 }
 
 }  // namespace carom

@@ -23,8 +23,6 @@ namespace carom {
 using detail::BallSlot;
 using detail::Carriage;
 using detail::Carried;
-using detail::Event;
-using detail::EventKind;
 using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the engine's constants
 
 namespace {
@@ -378,48 +376,10 @@ bool World::Impl::jammed(double t, std::uint32_t i, std::uint32_t j, bool inelas
   return jam_balls.size() > kJamContacts;
 }
 
-bool World::Impl::process_under_gravity(const Event& event) {
-  const std::uint32_t i = event.owner;
-  switch (event.kind) {
-    case EventKind::ball_ball: {
-      const std::uint32_t j = event.partner;
-      if (!balls[j].alive() || balls[j].version != event.partner_version) {
-        advance(i, event.time);
-        predict(i);
-        return false;
-      }
-      return resolve_pair_under_gravity(i, j, event.time);
-    }
-    case EventKind::ball_wall:
-      return resolve_wall_under_gravity(i, event.partner, event.time);
-    case EventKind::cell_crossing:
-      cross_cell(i, event.partner, event.time, false);
-      return false;
-    case EventKind::release:
-      // A sliding ball past its support's end (or off a curved support's tangent): it falls.
-      advance(i, event.time);
-      disturb(i);
-      ++balls[i].version;
-      predict(i);
-      return false;
-  }
-  return false;
-}
-
 bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall, double t) {
   advance(i, t);
   BallSlot& a = balls[i];
-  const Ball shape{a.position, radius_of(i)};
-  const Motion motion = motion_of(i);
-  Impact now = detail::time_of_impact(walls[wall], shape, motion, 0.0);
-  if (!now.hit) {
-    // A contact a sliver ahead that the motion cannot reach (resolve_ball_wall says why), or
-    // that the world's clock cannot (a time below its rounding: the event came up now).
-    const Impact ahead = detail::time_of_impact(walls[wall], shape, motion, kFarFuture);
-    if (ahead.hit && (ahead.a_at == a.position || t + ahead.t == t)) now = ahead;
-  }
-  const Vec2 point = now.hit ? now.point : detail::nearest_point(walls[wall], a.position);
-  const Vec2 normal = now.hit ? now.normal : normalized(point - a.position);
+  const auto [now, point, normal] = touch_wall(i, wall, t);
   const double approach = dot(a.velocity, normal);
   const bool in_bowl = detail::inside_arc(walls[wall], a.position);
   const bool movable_ball = movable(i);
@@ -437,19 +397,7 @@ bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall
       a.velocity -= normal * speed_change;
     }
     resolved = speed_change > 0.0;
-    if (resolved) {
-      if (def.collapse_time > 0.0) last_contact_times[i] = t;
-      ContactEvent contact;
-      contact.time = t;
-      contact.kind = ContactKind::ball_wall;
-      contact.a = id_of(i);
-      contact.wall = wall;
-      contact.point = point;
-      contact.normal = normal;
-      contact.approach_speed = approach;
-      contact.impulse = movable_ball ? speed_change * species_of(i).mass : 0.0;
-      record(contact);
-    }
+    if (resolved) record_ball_wall(i, wall, t, point, normal, approach, speed_change);
   }
   if (movable_ball && now.hit && approach <= rest_speed(i) && jammed(t, i, i, restitution < 1.0)) {
     // (A jam against a wall, as in resolve_pair_under_gravity.)

@@ -167,6 +167,27 @@ TEST(RunResume, GravityRunResumedReportsTheEnergyAtTheFirstStart) {
   EXPECT_GT(b["potential_energy_before"].get<double>(), 3000.0);
 }
 
+TEST(RunResume, GrowingRunResumedEndsBitIdentical) {
+  // Radii growing through the checkpoint: the world's growth (rate, start, re-planning time)
+  // travels in it, and the resumed run ends on the same radii and places.
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "grow.json", R"({
+    "world": {"boundary": "periodic", "lower": [0, 0], "upper": [30, 30], "growth_rate": 0.05},
+    "generators": [{"name": "g", "placement": "random", "count": 100, "radius": 0.6,
+                    "region": {"lower": [0, 0], "upper": [30, 30]},
+                    "velocity": {"distribution": "uniform_direction", "speed": 1}, "seed": 1}]})");
+  const std::string checkpoint = (dir / "grow.ckpt").string();
+  const ToolRun first =
+      run_carom({"run", scene, "--until", "4", "--checkpoint", checkpoint, "--checkpoint-every",
+                 "2", "--save", (dir / "first.json").string()});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const ToolRun resumed = run_carom({"run", "--resume", checkpoint + ".prev", "--until", "4",
+                                     "--save", (dir / "resumed.json").string()});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(read_file(dir / "resumed.json"), read_file(dir / "first.json"));
+  EXPECT_THAT(read_file(dir / "first.json"), HasSubstr("\"growth_rate\""));
+}
+
 TEST(RunResume, CheckpointsRotateToPrev) {
   const UntilRuns runs;
   ASSERT_EQ(runs.first.exit_code, 0) << runs.first.err;

@@ -67,6 +67,7 @@ TEST(GasErrors, NameTheOptionAndExitWithTwo) {
       {{"eos", "--eta", "0.3:0.1:0.1"}, "TO must not be below FROM"},
       {{"eos", "--eta", "0.1:0.2:0"}, "the step must be > 0"},
       {{"eos", "--threads", "0"}, "--threads \"0\""},
+      {{"gas", "--start", "melt"}, "--start \"melt\": must be lattice or compress"},
   };
   for (const BadOption& bad : cases) {
     const ToolRun run = run_carom(bad.args);
@@ -74,6 +75,22 @@ TEST(GasErrors, NameTheOptionAndExitWithTwo) {
     EXPECT_THAT(run.err, HasSubstr(bad.says));
     EXPECT_EQ(run.out, "");
   }
+}
+
+// A compressed start reaches a packing fraction no lattice of 10 disks holds, and says so.
+TEST(GasStart, CompressReachesDenseStatesAndSaysSo) {
+  const ToolRun refused = run_carom({"gas", "--n", "10", "--eta", "0.8"});
+  ASSERT_EQ(refused.exit_code, 2);
+  EXPECT_THAT(refused.err, HasSubstr("--start compress reaches denser states"));
+  const ToolRun run = run_carom({"gas", "--n", "64", "--eta", "0.74", "--start", "compress",
+                                 "--equilibrate", "5", "--collisions", "40", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const json out = json::parse(run.out);
+  EXPECT_EQ(out["start"], "compress");
+  EXPECT_GT(out["compression_collisions"].get<double>(), 0.0);
+  EXPECT_NEAR(out["kT"].get<double>(), 1.0, 1e-9);
+  EXPECT_GT(out["Z"].get<double>(), 5.0);  // dense: Henderson gives 9 at 0.74
+  EXPECT_EQ(json::parse(run_carom(kSmallGas).out)["start"], "lattice");
 }
 
 TEST(Eos, RunsEveryPointInOrderOnTwoThreads) {

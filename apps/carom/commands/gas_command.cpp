@@ -81,6 +81,11 @@ void add_gas_options(CLI::App& verb, GasOptionText& gas) {
   verb.add_option("--blocks", gas.blocks, "Blocks for the error estimates, 2 to 1000")
       ->type_name("B")
       ->capture_default_str();
+  verb.add_option("--start", gas.start,
+                  "lattice (melted by the equilibration) or compress (a random start grown to "
+                  "ETA, for dense states)")
+      ->type_name("HOW")
+      ->capture_default_str();
 }
 
 Command add_gas_command(CLI::App& app) {
@@ -92,8 +97,11 @@ Command add_gas_command(CLI::App& app) {
       "lattice with Maxwell-Boltzmann velocities (kT = 1, std::mt19937_64 seeded with S) and\n"
       "zero total momentum; K0*N collisions melt the lattice (at least N, to measure the\n"
       "collision rate), then the measured run lasts the time that K*N collisions take at\n"
-      "that rate. kT = K/N from the kinetic energy K. Every value carries its block-average\n"
-      "standard error (_err). Definitions and derivations: docs/science.md.\n\n"
+      "that rate. With --start compress the disks start instead at random at a low packing\n"
+      "fraction and grow to ETA (Lubachevsky-Stillinger, as carom pack; diameter growth 1e-3\n"
+      "of the thermal speed) before the equilibration. kT = K/N from the kinetic energy K.\n"
+      "Every value carries its block-average standard error (_err). Definitions and derivations: "
+      "docs/science.md.\n\n"
       "--out DIR writes rdf.csv, speed.csv, psi6_local.csv, msd.csv, disks.csv and the\n"
       "plots rdf.svg, speed.svg (with the Maxwell-Boltzmann curve), psi6_map.svg, msd.svg.\n\n"
       "Examples:\n"

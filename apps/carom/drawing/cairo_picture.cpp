@@ -232,6 +232,7 @@ void paint_picture(CairoImage& image, const ImageLayout& layout, const ScenePict
   for (const PictureDisc& d : picture.pockets) painter.disc(d);
   for (const PictureStroke& s : picture.walls) painter.stroke(s);
   for (const PictureDisc& d : picture.balls) painter.disc(d);
+  for (const PictureStroke& s : picture.overlay) painter.stroke(s);
   cairo_restore(cr);
   for (const PictureArrow& a : picture.arrows) painter.arrow(a);
   cairo_restore(cr);

@@ -57,6 +57,7 @@ struct ScenePicture {
   std::vector<PictureDisc> pockets;
   std::vector<PictureStroke> walls;  // a segment or polyline as a line; an arc as points
   std::vector<PictureDisc> balls;
+  std::vector<PictureStroke> overlay;  // over the balls: a packing's contact network
   std::vector<PictureArrow> arrows;
   std::optional<SpeedLegend> legend;
   std::string time_unit;  // the scene's, for the arrows' legend

@@ -51,6 +51,7 @@ std::string scene_svg(const ScenePicture& picture, std::optional<double> arrow_s
   for (const PictureDisc& pocket : picture.pockets) add_disc(figure, pocket);
   for (const PictureStroke& wall : picture.walls) add_stroke(figure, wall);
   for (const PictureDisc& ball : picture.balls) add_disc(figure, ball);
+  for (const PictureStroke& line : picture.overlay) add_stroke(figure, line);
   for (const PictureArrow& arrow : picture.arrows) {
     figure.arrow(arrow.from, arrow.to, Pen{hex_colour(arrow.colour), 1.0, false},
                  hex_colour(arrow.outline));

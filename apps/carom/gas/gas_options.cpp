@@ -75,6 +75,13 @@ GasSpec parse_gas_spec(const GasOptionText& text, double eta, const std::string&
     if (!(second > 0.0)) reject(mix, "the diameter must be > 0");
     if (!(fraction > 0.0 && fraction < 1.0)) reject(mix, "the fraction must lie in (0, 1)");
   }
+  spec.second_diameter = second;
+  spec.second_fraction = fraction;
+  if (text.start == "compress") {
+    spec.compress_start = true;
+  } else if (text.start != "lattice") {
+    throw UsageError("--start", text.start, "must be lattice or compress");
+  }
   spec.diameters = diameters_of(spec.n, second, fraction);
   const double sum_squares = std::accumulate(spec.diameters.begin(), spec.diameters.end(), 0.0,
                                              [](double sum, double d) { return sum + d * d; });
@@ -91,13 +98,14 @@ GasSpec parse_gas_spec(const GasOptionText& text, double eta, const std::string&
                          " wide, and it must be more than 3 of the "
                          "largest diameters wide: raise --n or lower --eta");
   }
-  if (spec.layout.nearest < largest * (1.0 + science::kLatticeSlack)) {
+  if (!spec.compress_start && spec.layout.nearest < largest * (1.0 + science::kLatticeSlack)) {
     throw UsageError("--eta", eta_text,
                      "the best triangular lattice for " + std::to_string(spec.n) +
                          " disks in this box has sites only " + readable(spec.layout.nearest) +
                          " apart, less than the largest diameter (" + readable(largest) +
                          "): this gas can start at packing fraction " +
-                         readable(eta * std::pow(spec.layout.nearest / largest, 2.0)) + " at most");
+                         readable(eta * std::pow(spec.layout.nearest / largest, 2.0)) +
+                         " at most (--start compress reaches denser states)");
   }
   const double equilibrate = parse_per_disk("--equilibrate", text.equilibrate, true);
   spec.collisions_per_disk = parse_per_disk("--collisions", text.collisions, false);

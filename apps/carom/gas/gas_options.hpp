@@ -19,6 +19,7 @@ struct GasOptionText {
   std::string collisions = "500";
   std::string seed = "1";
   std::string blocks = "16";
+  std::string start = "lattice";  // or "compress"
 };
 
 // A gas ready to build and run.
@@ -31,7 +32,20 @@ struct GasSpec {
   double collisions_per_disk = 0.0;
   std::uint64_t seed = 0;
   std::uint64_t blocks = 0;
+  // Where the disks start: a triangular lattice at eta (melted by the equilibration), or a
+  // random dilute start compressed to eta (science::compress at kCompressStartRate, then the
+  // equilibration at fixed radius).
+  bool compress_start = false;
+  double second_diameter = 1.0;  // --mix's D and F (1 and 0 without it)
+  double second_fraction = 0.0;
 };
+
+// The growth speed of a compressed start's diameter, in thermal speeds: slow enough that the gas
+// stays near equilibrium on the way (its pressure follows the equation of state within 1 % at
+// η ≤ 0.5: tests/science/packing_tests.cpp), and equal disks crystallise above η ≈ 0.72.
+inline constexpr double kCompressStartRate = 1e-3;
+// A compressed start is placed at random at this packing fraction (or half the target, if less).
+inline constexpr double kCompressStartEta = 0.3;
 
 // Parses and checks every option, eta included; throws UsageError for the first bad one.
 [[nodiscard]] GasSpec parse_gas_spec(const GasOptionText& text);

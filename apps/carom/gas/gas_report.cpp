@@ -91,6 +91,11 @@ nlohmann::json gas_json(const GasSpec& spec, const GasOutcome& outcome) {
   out["seed"] = spec.seed;
   out["mix"] = !one_size(spec);
   out["box_side"] = spec.layout.side;
+  out["start"] = spec.compress_start ? "compress" : "lattice";
+  if (spec.compress_start) {
+    out["compression_collisions"] = outcome.compression_collisions;
+    out["compression_seconds"] = outcome.compression_seconds;
+  }
   out["equilibration_collisions"] = outcome.equilibration_collisions;
   out["collisions"] = r.collisions;
   out["blocks"] = spec.blocks;
@@ -129,6 +134,10 @@ std::string gas_text(const GasSpec& spec, const GasOutcome& outcome) {
   out << "hard-disk gas: N = " << spec.n << ", eta = " << readable(spec.eta)
       << (one_size(spec) ? "" : " (two sizes)") << ", box " << readable(spec.layout.side)
       << ", seed " << spec.seed << "\n";
+  if (spec.compress_start) {
+    out << "  compressed from a random start: " << outcome.compression_collisions
+        << " collisions in " << rounded(outcome.compression_seconds) << " s\n";
+  }
   if (outcome.interrupted) {
     out << "  stopped by a signal after " << r.blocks_done << " of " << spec.blocks
         << " blocks: the estimates cover those\n";

@@ -15,6 +15,8 @@ struct GasOutcome {
   std::uint64_t equilibration_collisions = 0;  // resolved (at least one per disk)
   double equilibration_rate = 0.0;             // ω seen while equilibrating
   double wall_seconds = 0.0;                   // of the production run, measurements included
+  std::uint64_t compression_collisions = 0;    // of a compressed start (--start compress)
+  double compression_seconds = 0.0;
   // Stopped by a signal: during equilibration (nothing measured), or during the measurement
   // (results.interrupted: estimates over the blocks completed, maybe none).
   bool interrupted = false;

@@ -130,6 +130,19 @@ struct SceneGenerator {
   std::uint64_t seed = 1;  // for random placement and random velocities (std::mt19937_64)
 };
 
+// A thermostat for runs of the scene (step_scene, run_scene_until, run_scene_collisions): the
+// movable balls' velocities are scaled about their centre of mass's so that their kinetic energy
+// is `temperature` a ball (World::set_temperature), every `interval` of scene time (at the scene
+// clock's multiples of it) or every `collisions` collisions (at the world's collision count's
+// multiples of it). Exactly one of the two is set. Growth pumps energy into a compression; this
+// takes it out. Steps at fixed multiples make a run resumed from a checkpoint repeat the one never
+// stopped.
+struct SceneThermostat {
+  double temperature = 1.0;  // kT, > 0
+  std::optional<double> interval;
+  std::optional<std::uint64_t> collisions;
+};
+
 struct Scene {
   std::string description;  // free text for the reader
   SceneUnits units;
@@ -141,6 +154,7 @@ struct Scene {
   std::vector<Arc> arcs;
   std::vector<ScenePocket> pockets;
   std::vector<SceneGenerator> generators;
+  std::optional<SceneThermostat> thermostat;  // none: the runs keep the energy they have
 };
 
 // ---- reading and writing ----
@@ -174,6 +188,7 @@ struct SceneWorld {
   std::vector<BallId> pockets;  // pockets[k] is scene.pockets[k]
   std::unordered_map<std::string, BallId> by_name;  // named balls and pockets
   double start_time = 0.0;                          // scene time when the world's clock read 0
+  double thermostat_work = 0.0;  // Σ of the thermostat's changes of kinetic energy so far
 
   // The scene's clock now: start_time + world.time().
   [[nodiscard]] double time() const noexcept { return start_time + world.time(); }
@@ -204,6 +219,9 @@ struct PottedBall {
 // `contacts` are world times (add start_time for scene time), and so are run_scene_until's `time`
 // and run_scene_collisions' `time_limit`. Afterwards world.stop_reason() says why the call
 // returned (none, no_more_contacts, time_limit or interrupted; pockets' contacts never end it).
+// With a thermostat the runs stop at each of its steps (a multiple of its interval on the scene
+// clock, or of its collisions on the world's count, after the call's start), scale the
+// velocities, and go on; a step at the call's very end is taken before it returns.
 double step_scene(SceneWorld& scene_world, double dt, std::vector<ContactEvent>* contacts = nullptr,
                   std::vector<PottedBall>* potted = nullptr);
 double run_scene_until(SceneWorld& scene_world, double time,

@@ -114,6 +114,24 @@ WorldDef read_settings(const ObjectFields& fields) {
   return settings;
 }
 
+std::optional<SceneThermostat> read_thermostat(const ObjectFields& fields) {
+  if (!fields.has("thermostat")) return std::nullopt;
+  const ObjectFields t(fields.source(), fields.at("thermostat"), fields.path_of("thermostat"),
+                       {"temperature", "interval", "collisions"});
+  SceneThermostat thermostat;
+  thermostat.temperature = positive(t, "temperature", 1.0);
+  if (t.has("interval") == t.has("collisions")) {
+    t.fail(t.has("interval") ? "collisions" : "interval",
+           "give exactly one of interval and collisions");
+  }
+  if (t.has("interval")) thermostat.interval = positive(t, "interval", 1.0);
+  if (t.has("collisions")) {
+    thermostat.collisions = t.whole_number("collisions");
+    if (*thermostat.collisions == 0) t.fail("collisions", "must be at least 1");
+  }
+  return thermostat;
+}
+
 SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
   const ObjectFields f(source, json, path,
                        {"name", "position", "velocity", "radius", "mass", "restitution", "color"});
@@ -300,7 +318,7 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   const nlohmann::json json = parse_json(source);
   const ObjectFields top(source, json, {},
                          {"carom_scene", "description", "units", "world", "time", "balls",
-                          "segments", "polylines", "arcs", "pockets", "generators"});
+                          "segments", "polylines", "arcs", "pockets", "generators", "thermostat"});
   if (top.has("carom_scene")) {
     const std::uint64_t version = top.whole_number("carom_scene");
     if (version != kSceneFormatVersion) {
@@ -319,6 +337,7 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   read_array(top, "arcs", scene.arcs, read_arc);
   read_array(top, "pockets", scene.pockets, read_pocket);
   read_array(top, "generators", scene.generators, read_generator);
+  scene.thermostat = read_thermostat(top);
   if (scene.balls.size() > kMaxSceneBalls) {
     top.fail("balls", "holds more than " + std::to_string(kMaxSceneBalls) + " balls");
   }

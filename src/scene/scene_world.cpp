@@ -1,5 +1,7 @@
 // Building a world from a scene, running it with pockets, and reading its state back.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -124,10 +126,92 @@ void stop_at_pocket_contacts(World& world, std::vector<BallId> pockets) {
   });
 }
 
+namespace {
+
+// The runs with pockets alone: a pocket's contact ends the world's run, the ball goes, the run
+// goes on.
+void advance_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
+                   std::vector<PottedBall>* potted) {
+  for (;;) {
+    static_cast<void>(sw.world.run_until(time));
+    append(sw.world, contacts);
+    if (!sw.world.stopped_early()) break;
+    pot(sw, potted);
+    if (sw.world.time() >= time) break;
+  }
+}
+
+std::uint64_t advance_collisions(SceneWorld& sw, std::uint64_t count,
+                                 std::vector<ContactEvent>* contacts,
+                                 std::vector<PottedBall>* potted, double time_limit) {
+  std::uint64_t done = 0;
+  while (done < count) {
+    done += sw.world.run_collisions(count - done, time_limit);
+    append(sw.world, contacts);
+    if (!sw.world.stopped_early()) break;
+    pot(sw, potted);
+  }
+  return done;
+}
+
+// The world time of the thermostat's next step by time after now (infinity without one). Steps
+// fall on the scene clock's multiples of the interval, each computed by the one expression, so a
+// run that stopped on a step knows it exactly and never takes it twice.
+double next_thermostat_time(const SceneWorld& sw) {
+  if (!sw.scene.thermostat || !sw.scene.thermostat->interval) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const double interval = *sw.scene.thermostat->interval;
+  double k = std::floor(sw.time() / interval);
+  while (k * interval - sw.start_time <= sw.world.time()) k += 1.0;
+  return k * interval - sw.start_time;
+}
+
+// Collisions until the thermostat's next step by collisions (0 without one).
+std::uint64_t collisions_to_thermostat(const SceneWorld& sw) {
+  if (!sw.scene.thermostat || !sw.scene.thermostat->collisions) return 0;
+  const std::uint64_t every = *sw.scene.thermostat->collisions;
+  return every - sw.world.collision_count() % every;
+}
+
+void thermostat_step(SceneWorld& sw) {
+  sw.thermostat_work += sw.world.set_temperature(sw.scene.thermostat->temperature);
+}
+
+// Whether the last run ended for a reason that ends the call (a stop from outside, or no contact
+// ever again in a run by collisions).
+bool run_ended(const World& world) {
+  return world.stop_reason() == StopReason::interrupted ||
+         world.stop_reason() == StopReason::no_more_contacts;
+}
+
+// Runs by collisions (at most `count`, never past time_limit) with the thermostat's steps.
+std::uint64_t collisions_with_thermostat(SceneWorld& sw, std::uint64_t count,
+                                         std::vector<ContactEvent>* contacts,
+                                         std::vector<PottedBall>* potted, double time_limit) {
+  std::uint64_t done = 0;
+  while (done < count) {
+    const double step_time = next_thermostat_time(sw);
+    const std::uint64_t to_step = collisions_to_thermostat(sw);
+    const std::uint64_t chunk = to_step != 0 ? std::min(count - done, to_step) : count - done;
+    const std::uint64_t chunk_done =
+        advance_collisions(sw, chunk, contacts, potted, std::min(time_limit, step_time));
+    done += chunk_done;
+    if (sw.world.stop_reason() == StopReason::interrupted) break;
+    const bool at_time_step = sw.world.time() >= step_time;
+    if (at_time_step || (to_step != 0 && chunk_done == to_step)) thermostat_step(sw);
+    if (sw.world.time() >= time_limit || run_ended(sw.world)) break;
+    if (chunk_done < chunk && !at_time_step) break;
+  }
+  return done;
+}
+
+}  // namespace
+
 double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,
                   std::vector<PottedBall>* potted) {
   const double start = sw.world.time();
-  if (sw.pockets.empty()) {
+  if (sw.pockets.empty() && !sw.scene.thermostat) {
     const double advanced = sw.world.step(dt);
     append(sw.world, contacts);
     return advanced;
@@ -138,11 +222,25 @@ double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts
 double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
                        std::vector<PottedBall>* potted) {
   const double start = sw.world.time();
+  if (!sw.scene.thermostat) {
+    advance_until(sw, time, contacts, potted);
+    return sw.world.time() - start;
+  }
+  if (sw.scene.thermostat->collisions) {
+    // By collisions, with no bound on their count, up to the time.
+    static_cast<void>(collisions_with_thermostat(sw, std::numeric_limits<std::uint64_t>::max(),
+                                                 contacts, potted, time));
+    // No contact will ever come: the rest of the way has no step to take.
+    if (sw.world.stop_reason() == StopReason::no_more_contacts && sw.world.time() < time) {
+      advance_until(sw, time, contacts, potted);
+    }
+    return sw.world.time() - start;
+  }
   for (;;) {
-    static_cast<void>(sw.world.run_until(time));
-    append(sw.world, contacts);
-    if (!sw.world.stopped_early()) break;
-    pot(sw, potted);
+    const double step_time = next_thermostat_time(sw);
+    advance_until(sw, std::min(time, step_time), contacts, potted);
+    if (sw.world.stop_reason() == StopReason::interrupted) break;
+    if (sw.world.time() >= step_time) thermostat_step(sw);
     if (sw.world.time() >= time) break;
   }
   return sw.world.time() - start;
@@ -151,14 +249,8 @@ double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* c
 std::uint64_t run_scene_collisions(SceneWorld& sw, std::uint64_t count,
                                    std::vector<ContactEvent>* contacts,
                                    std::vector<PottedBall>* potted, double time_limit) {
-  std::uint64_t done = 0;
-  while (done < count) {
-    done += sw.world.run_collisions(count - done, time_limit);
-    append(sw.world, contacts);
-    if (!sw.world.stopped_early()) break;
-    pot(sw, potted);
-  }
-  return done;
+  if (!sw.scene.thermostat) return advance_collisions(sw, count, contacts, potted, time_limit);
+  return collisions_with_thermostat(sw, count, contacts, potted, time_limit);
 }
 
 Scene capture_scene(const SceneWorld& sw) {

@@ -161,6 +161,15 @@ std::string to_json_text(const Scene& scene) {
     if (p.name) line.add("name", str(*p.name));
     return line.add("position", vec(p.position)).add("radius", num(p.radius)).done();
   });
+  if (scene.thermostat) {
+    Line thermostat;
+    thermostat.add("temperature", num(scene.thermostat->temperature));
+    if (scene.thermostat->interval) thermostat.add("interval", num(*scene.thermostat->interval));
+    if (scene.thermostat->collisions) {
+      thermostat.add("collisions", std::to_string(*scene.thermostat->collisions));
+    }
+    out += ",\n  \"thermostat\": " + thermostat.done();
+  }
   write_array(out, "generators", scene.generators, generator_line);
   out += "\n}\n";
   return out;

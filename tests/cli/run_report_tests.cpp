@@ -76,7 +76,8 @@ TEST(RunReport, JsonKeysKeepTheirOrderAndAddTheEnergyOfGravity) {
                                           "momentum_before",
                                           "momentum_after",
                                           "momentum_change",
-                                          "frames"};
+                                          "frames",
+                                          "thermostat_work"};
   EXPECT_EQ(keys, expected);
   // Without gravity the total is the kinetic energy, bit for bit, and so is its change.
   EXPECT_EQ(report["potential_energy_before"], 0.0);

@@ -188,6 +188,31 @@ TEST(RunResume, GrowingRunResumedEndsBitIdentical) {
   EXPECT_THAT(read_file(dir / "first.json"), HasSubstr("\"growth_rate\""));
 }
 
+TEST(RunResume, ThermostattedCompressionResumedEndsBitIdentical) {
+  // The thermostat's steps fall on the scene clock's multiples of 0.7 (or on the collision
+  // count's of 20), so a run resumed from a checkpoint at t = 2 takes the same steps.
+  for (const char* every : {R"("interval": 0.7)", R"("collisions": 20)"}) {
+    const ScratchDir dir;
+    const std::string scene = write_scene(dir, "grow.json", std::string(R"({
+      "world": {"boundary": "periodic", "lower": [0, 0], "upper": [30, 30], "growth_rate": 0.05},
+      "thermostat": {"temperature": 0.5, )") + every + R"(},
+      "generators": [{"name": "g", "placement": "random", "count": 100, "radius": 0.6,
+                      "region": {"lower": [0, 0], "upper": [30, 30]},
+                      "velocity": {"distribution": "uniform_direction", "speed": 1}, "seed": 1}]})");
+    const std::string checkpoint = (dir / "grow.ckpt").string();
+    const ToolRun first =
+        run_carom({"run", scene, "--until", "4", "--checkpoint", checkpoint, "--checkpoint-every",
+                   "2", "--save", (dir / "first.json").string(), "--stats", "--json"});
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_LT(nlohmann::json::parse(first.out)["thermostat_work"].get<double>(), 0.0) << every;
+    const ToolRun resumed = run_carom({"run", "--resume", checkpoint + ".prev", "--until", "4",
+                                       "--save", (dir / "resumed.json").string()});
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_EQ(read_file(dir / "resumed.json"), read_file(dir / "first.json")) << every;
+    EXPECT_THAT(read_file(dir / "first.json"), HasSubstr("\"thermostat\""));
+  }
+}
+
 TEST(RunResume, CheckpointsRotateToPrev) {
   const UntilRuns runs;
   ASSERT_EQ(runs.first.exit_code, 0) << runs.first.err;

@@ -307,6 +307,21 @@ TEST(SceneErrors, GrowthRateIsNonNegativeAndNotWithGravity) {
   EXPECT_THAT(with_gravity.problem, HasSubstr("grow or fall"));
 }
 
+TEST(SceneErrors, ThermostatTakesATemperatureAndOneInterval) {
+  EXPECT_EQ(error_of(R"({"thermostat": {"temperature": 0, "interval": 1}})").path,
+            "thermostat.temperature");
+  const auto both = error_of(R"({"thermostat": {"interval": 1, "collisions": 5}})");
+  EXPECT_EQ(both.path, "thermostat.collisions");
+  EXPECT_THAT(both.problem, HasSubstr("exactly one of interval and collisions"));
+  EXPECT_EQ(error_of(R"({"thermostat": {"temperature": 1}})").path, "thermostat.interval");
+  EXPECT_EQ(error_of(R"({"thermostat": {"interval": -1}})").path, "thermostat.interval");
+  EXPECT_EQ(error_of(R"({"thermostat": {"collisions": 0}})").path, "thermostat.collisions");
+  EXPECT_EQ(error_of(R"({"thermostat": {"collisions": 1.5}})").path, "thermostat.collisions");
+  const auto unknown = error_of(R"({"thermostat": {"interval": 1, "temprature": 2}})");
+  EXPECT_EQ(unknown.path, "thermostat.temprature");
+  EXPECT_EQ(unknown.suggestion, "temperature");
+}
+
 TEST(SceneErrors, MissingField) {
   const auto d = error_of("{\"balls\": [{\"radius\": 1}]}");
   EXPECT_EQ(d.path, "balls[0].position");

@@ -134,6 +134,22 @@ TEST(SceneRoundTrip, GeneratorsPocketsPolylinesArcsAndSettingsSurvive) {
   EXPECT_TRUE(scene.polylines[0].closed);
 }
 
+TEST(SceneRoundTrip, ThermostatReadsBackBitIdentical) {
+  Scene scene;
+  scene.thermostat = SceneThermostat{0.1 + 0.2, 1.0 / 3.0, std::nullopt};
+  const std::string text = to_json_text(scene);
+  const Scene back = parse_scene(text, "round-trip");
+  ASSERT_TRUE(back.thermostat.has_value());
+  EXPECT_EQ(bits(back.thermostat->temperature), bits(0.1 + 0.2));
+  EXPECT_EQ(bits(*back.thermostat->interval), bits(1.0 / 3.0));
+  EXPECT_FALSE(back.thermostat->collisions.has_value());
+  EXPECT_EQ(to_json_text(back), text);
+  scene.thermostat = SceneThermostat{2.0, std::nullopt, 12345};
+  const Scene by_collisions = parse_scene(to_json_text(scene), "round-trip");
+  EXPECT_EQ(by_collisions.thermostat->collisions, std::optional<std::uint64_t>(12345));
+  EXPECT_EQ(to_json_text(Scene{}).find("thermostat"), std::string::npos);
+}
+
 TEST(SceneRoundTrip, GravityReadsBackBitIdentical) {
   std::mt19937_64 random(20261201);
   std::vector<Vec2> values{{0.0, -9.81}, {-0.0, 0.0}, {0.0, -0.0}, {1e-300, -1e300}};

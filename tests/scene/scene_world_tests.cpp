@@ -114,6 +114,58 @@ TEST(SceneWorld, CapturedSceneContinuesTheRun) {
   }
 }
 
+// A growing gas with a thermostat: its steps fall at the interval's multiples of the scene
+// clock (so a run ending on one ends at kT exactly), take out the energy growth put in, and a run
+// cut in pieces takes the same steps as one that is not (to rounding: where a run stops, the world
+// brings its balls to that time).
+TEST(SceneWorld, ThermostatStepsAtItsIntervalAndHoldsTheTemperature) {
+  const std::string text = R"({
+    "world": {"boundary": "periodic", "lower": [0, 0], "upper": [20, 20], "growth_rate": 0.1},
+    "time": 0.25,
+    "thermostat": {"temperature": 2, "interval": 0.5},
+    "generators": [{"placement": "random", "count": 80, "radius": 0.5, "seed": 3,
+                    "velocity": {"distribution": "maxwell_boltzmann", "temperature": 2,
+                                 "zero_momentum": true}}]})";
+  SceneWorld whole = make_world(parse_scene(text));
+  run_scene_until(whole, 2.75);  // scene time 3.0, a multiple of 0.5
+  EXPECT_NEAR(whole.world.kinetic_energy(), 80.0 * 2.0, 1e-9);
+  EXPECT_LT(whole.thermostat_work, 0.0);
+  SceneWorld pieces = make_world(parse_scene(text));
+  for (const double dt : {0.1, 0.4, 0.5, 0.33, 1.42}) step_scene(pieces, dt);
+  ASSERT_EQ(pieces.world.time(), whole.world.time());
+  EXPECT_NEAR(pieces.thermostat_work, whole.thermostat_work, 1e-9);
+  EXPECT_NEAR(pieces.world.kinetic_energy(), 80.0 * 2.0, 1e-9);
+  for (std::size_t i = 0; i < whole.balls.size(); ++i) {
+    EXPECT_LT(length(pieces.world.position(pieces.balls[i]) - whole.world.position(whole.balls[i])),
+              1e-9);
+  }
+  // Without the thermostat the same run heats up.
+  std::string hot = text;
+  const std::string thermostat = R"("thermostat": {"temperature": 2, "interval": 0.5},)";
+  hot.erase(hot.find(thermostat), thermostat.size());
+  SceneWorld heated = make_world(parse_scene(hot));
+  run_scene_until(heated, 2.75);
+  EXPECT_GT(heated.world.kinetic_energy(), 80.0 * 2.0 * 1.01);
+}
+
+TEST(SceneWorld, ThermostatByCollisionsStepsAtTheCountsMultiples) {
+  const std::string text = R"({
+    "world": {"boundary": "periodic", "lower": [0, 0], "upper": [20, 20], "growth_rate": 0.1},
+    "thermostat": {"temperature": 1, "collisions": 100},
+    "generators": [{"placement": "random", "count": 80, "radius": 0.5, "seed": 3,
+                    "velocity": {"distribution": "maxwell_boltzmann", "temperature": 1}}]})";
+  SceneWorld sw = make_world(parse_scene(text));
+  EXPECT_EQ(run_scene_collisions(sw, 1000), 1000U);
+  EXPECT_EQ(sw.world.collision_count() % 100, 0U);
+  // Scaled about the centre of mass: K − P²/(2M) is N·kT.
+  const Vec2 p = sw.world.momentum();
+  EXPECT_NEAR(sw.world.kinetic_energy() - dot(p, p) / (2.0 * 80.0), 80.0, 1e-9);
+  const double work = sw.thermostat_work;
+  EXPECT_LT(work, 0.0);
+  run_scene_until(sw, sw.world.time() + 1.0);
+  EXPECT_NE(sw.thermostat_work, work);
+}
+
 }  // namespace
 }  // namespace carom
 

@@ -55,6 +55,15 @@ int run(const InfoOptions& options) {
     json["gravity"] = {scene.world.gravity.x, scene.world.gravity.y};
     json["rest_height"] = scene.world.rest_height;
     json["growth_rate"] = scene.world.growth_rate;
+    if (scene.thermostat) {
+      const SceneThermostat& t = *scene.thermostat;
+      json["thermostat"] = {
+          {"temperature", t.temperature},
+          {"interval", t.interval ? nlohmann::ordered_json(*t.interval) : nullptr},
+          {"collisions", t.collisions ? nlohmann::ordered_json(*t.collisions) : nullptr}};
+    } else {
+      json["thermostat"] = nullptr;
+    }
     json["momentum"] = {s.momentum.x, s.momentum.y};
     if (s.smallest_gap) {
       json["smallest_gap"] = {
@@ -82,6 +91,13 @@ int run(const InfoOptions& options) {
                ? ", growth rate " + readable(scene.world.growth_rate) + " a time unit"
                : "") +
           "\n";
+  if (scene.thermostat) {
+    const SceneThermostat& t = *scene.thermostat;
+    text += "thermostat        kT " + readable(t.temperature) + " every " +
+            (t.interval ? readable(*t.interval) + " " + scene.units.time
+                        : std::to_string(*t.collisions) + " collisions") +
+            "\n";
+  }
   text += "time              " + readable(scene.time) + "\n";
   text += "balls             " + std::to_string(s.balls) + " (" + std::to_string(generated) +
           " generated, " + std::to_string(s.immovable) + " immovable)\n";

@@ -230,6 +230,8 @@ std::size_t live_balls(const SceneWorld& built) {
 bool keeps_total_energy(const SceneWorld& built) {
   const Scene& scene = built.scene;
   if (!scene.pockets.empty() || scene.world.restitution != 1.0) return false;
+  // Growth pumps energy in, a thermostat takes it out.
+  if (scene.world.growth_rate != 0.0 || scene.thermostat) return false;
   for (const SceneBall& ball : scene.balls) {
     if (ball.restitution && *ball.restitution != 1.0) return false;
     if (ball.mass == kImmovable && (ball.velocity.x != 0.0 || ball.velocity.y != 0.0)) return false;
@@ -650,6 +652,7 @@ int run(const RunOptions& options) {
   outcome.end_time = built.time();
   outcome.balls_at_end = live_balls(built);
   outcome.energy_after = built.world.kinetic_energy();
+  if (built.scene.thermostat) outcome.thermostat_work = built.thermostat_work;
   outcome.potential_after = built.world.potential_energy();
   outcome.momentum_after = built.world.momentum();
 

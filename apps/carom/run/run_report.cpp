@@ -92,6 +92,7 @@ std::string run_text(const RunOutcome& o) {
   }
   text += "momentum        " + readable(o.momentum_before) + " -> " + readable(o.momentum_after) +
           " (" + change + " " + rounded(o.momentum_change()) + ")\n";
+  if (o.thermostat_work) text += "thermostat work " + readable(*o.thermostat_work) + "\n";
   if (o.frames > 0) text += "frames          " + std::to_string(o.frames) + "\n";
   return text;
 }
@@ -128,6 +129,8 @@ nlohmann::ordered_json run_json(const RunOutcome& o) {
   json["momentum_after"] = {o.momentum_after.x, o.momentum_after.y};
   json["momentum_change"] = o.momentum_change();
   json["frames"] = o.frames;
+  json["thermostat_work"] =
+      o.thermostat_work ? nlohmann::ordered_json(*o.thermostat_work) : nlohmann::ordered_json();
   return json;
 }
 

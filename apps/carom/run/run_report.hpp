@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "carom/vec2.hpp"
@@ -40,6 +41,8 @@ struct RunOutcome {
   bool conservative = true;
   // Whether it conserves the total energy: the same, gravity allowed.
   bool total_energy_conserved = true;
+  // With a scene's thermostat: the sum of its changes of kinetic energy over the run.
+  std::optional<double> thermostat_work;
 
   // (E_after - E_before) / E_before; 0 when E_before is 0.
   [[nodiscard]] double energy_change() const;

@@ -76,18 +76,18 @@ World make_packing_world(const PackingSpec& spec) {
   const std::uint64_t second = second_species_count(spec);
   const std::uint64_t first = spec.n - second;
   // Cell area from the reference diameter 1 at sized_for_eta.
-  const double covered_at_unit = std::numbers::pi / 4.0 *
-                                 (static_cast<double>(first) +
-                                  static_cast<double>(second) * spec.second_diameter *
-                                      spec.second_diameter);
+  const double covered_at_unit =
+      std::numbers::pi / 4.0 *
+      (static_cast<double>(first) +
+       static_cast<double>(second) * spec.second_diameter * spec.second_diameter);
   const double area = covered_at_unit / spec.sized_for_eta;
   const double width = std::sqrt(area / spec.aspect);
   const double height = width * spec.aspect;
   const double start_scale = std::sqrt(spec.start_eta / spec.sized_for_eta);
   const double first_radius = 0.5 * start_scale;
   const double second_radius = 0.5 * start_scale * spec.second_diameter;
-  const double largest = 2.0 * std::max(second > 0 ? second_radius : 0.0,
-                                        first > 0 ? first_radius : 0.0);
+  const double largest =
+      2.0 * std::max(second > 0 ? second_radius : 0.0, first > 0 ? first_radius : 0.0);
   if (spec.boundary == Boundary::periodic) {
     // The world's rule holds for the largest disk when packed, at diameter sized_for_eta's.
     const double packed_largest = largest / start_scale;
@@ -201,9 +201,9 @@ CompressionResult compress(World& world, const CompressionSettings& settings,
                 "must be a finite number > 0");
   refuse_unless(settings.pressure_limit > 1.0, kCompressWhere, "pressure_limit",
                 settings.pressure_limit, "must be > 1");
-  refuse_unless(settings.target_eta == 0.0 ||
-                    (settings.target_eta > 0.0 && settings.target_eta < 1.0),
-                kCompressWhere, "target_eta", settings.target_eta, "must be 0 or lie in (0, 1)");
+  refuse_unless(
+      settings.target_eta == 0.0 || (settings.target_eta > 0.0 && settings.target_eta < 1.0),
+      kCompressWhere, "target_eta", settings.target_eta, "must be 0 or lie in (0, 1)");
   const WorldDef& def = world.def();
   if (def.boundary != Boundary::periodic && def.boundary != Boundary::box) {
     throw InvalidArgument(kCompressWhere, "world.boundary", "open",
@@ -230,9 +230,9 @@ CompressionResult compress(World& world, const CompressionSettings& settings,
   const double n = static_cast<double>(ids.size());
   const double eta_now = packing_fraction(world);
   if (settings.target_eta != 0.0 && !(settings.target_eta > eta_now)) {
-    throw InvalidArgument(kCompressWhere, "target_eta", number_text(settings.target_eta),
-                          "must be above the world's packing fraction now, " +
-                              number_text(eta_now));
+    throw InvalidArgument(
+        kCompressWhere, "target_eta", number_text(settings.target_eta),
+        "must be above the world's packing fraction now, " + number_text(eta_now));
   }
 
   // The world's growth rate is relative to its radii: the smallest diameter grows at
@@ -269,8 +269,8 @@ CompressionResult compress(World& world, const CompressionSettings& settings,
   world.set_stop_condition([&](const ContactEvent& contact) {
     if (contact.kind == ContactKind::ball_ball) {
       const double grown = 1.0 + window_rate * (contact.time - window_start);
-      virial += contact.impulse * (window_radius[contact.a.index] + window_radius[contact.b.index]) *
-                grown;
+      virial += contact.impulse *
+                (window_radius[contact.a.index] + window_radius[contact.b.index]) * grown;
     }
     return false;
   });

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <csignal>
 #include <cmath>
+#include <csignal>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
@@ -24,9 +24,20 @@ using nlohmann::json;
 using ::testing::HasSubstr;
 
 // Jams within a second or two: few disks, a fast rate, a low pressure limit.
-const std::vector<std::string> kQuickJam{"pack",   "--n",     "150",   "--mix",
-                                         "1.4:0.5", "--rate", "0.01", "--until-jammed",
-                                         "--pressure-limit", "1e8", "--seed", "4", "--json", "-q"};
+const std::vector<std::string> kQuickJam{"pack",
+                                         "--n",
+                                         "150",
+                                         "--mix",
+                                         "1.4:0.5",
+                                         "--rate",
+                                         "0.01",
+                                         "--until-jammed",
+                                         "--pressure-limit",
+                                         "1e8",
+                                         "--seed",
+                                         "4",
+                                         "--json",
+                                         "-q"};
 
 TEST(PackJson, HasEveryKeyAndAJammedPacking) {
   const ToolRun run = run_carom(kQuickJam);
@@ -55,9 +66,9 @@ TEST(PackOut, WritesTheScenePackedAndItsPicture) {
   const std::string scene_path = (dir / "packed.json").string();
   const std::string png = (dir / "packed.png").string();
   const std::string svg = (dir / "packed.svg").string();
-  const ToolRun run = run_carom({"pack", "--n", "120", "--rate", "0.01", "--eta", "0.7",
-                                 "--boundary", "box", "--aspect", "2", "--json", "-q", "--out",
-                                 scene_path, "--picture", png});
+  const ToolRun run =
+      run_carom({"pack", "--n", "120", "--rate", "0.01", "--eta", "0.7", "--boundary", "box",
+                 "--aspect", "2", "--json", "-q", "--out", scene_path, "--picture", png});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const json out = json::parse(run.out);
   EXPECT_NEAR(out["eta"].get<double>(), 0.7, 1e-12);
@@ -68,9 +79,9 @@ TEST(PackOut, WritesTheScenePackedAndItsPicture) {
   ASSERT_EQ(scene.balls.size(), 120U);
   EXPECT_EQ(scene.world.boundary, Boundary::box);
   EXPECT_EQ(scene.world.growth_rate, 0.0);
-  EXPECT_DOUBLE_EQ((scene.world.upper.y - scene.world.lower.y) /
-                       (scene.world.upper.x - scene.world.lower.x),
-                   2.0);
+  EXPECT_DOUBLE_EQ(
+      (scene.world.upper.y - scene.world.lower.y) / (scene.world.upper.x - scene.world.lower.x),
+      2.0);
   // Written exactly: the scene's packing fraction is the report's, and it writes back the same.
   double covered = 0.0;
   for (const SceneBall& ball : scene.balls) covered += std::numbers::pi * ball.radius * ball.radius;
@@ -81,8 +92,8 @@ TEST(PackOut, WritesTheScenePackedAndItsPicture) {
   EXPECT_EQ(built.world.audit_all_pairs(), std::nullopt);
   EXPECT_EQ(read_file(png).substr(1, 3), "PNG");
 
-  const ToolRun drawn = run_carom({"pack", "--n", "100", "--rate", "0.01", "--eta", "0.6", "-q",
-                                   "--picture", svg});
+  const ToolRun drawn =
+      run_carom({"pack", "--n", "100", "--rate", "0.01", "--eta", "0.6", "-q", "--picture", svg});
   ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
   EXPECT_THAT(read_file(svg), HasSubstr("<svg"));
   EXPECT_THAT(read_file(svg), HasSubstr("rattlers"));

@@ -177,8 +177,8 @@ std::string description_of(const PackOptions& o, const science::CompressionResul
 
 nlohmann::json pack_json(const PackOptions& o, const PackRequest& r,
                          const science::CompressionResult& result,
-                         const science::ContactNetwork& network, double tolerance,
-                         double psi6, double wall_seconds) {
+                         const science::ContactNetwork& network, double tolerance, double psi6,
+                         double wall_seconds) {
   nlohmann::json out;
   out["n"] = r.spec.n;
   out["boundary"] = o.boundary;
@@ -289,10 +289,10 @@ int run(const PackOptions& o) {
   }
   if (!o.picture.empty()) {
     const std::string title = std::filesystem::path(o.picture).filename().string();
-    const std::string subtitle = "packing fraction " + rounded(result.eta) + ", Z = " +
-                                 rounded(network.mean_contacts_of_rest) + " without " +
-                                 std::to_string(network.rattlers) + " rattlers (grey), psi6 = " +
-                                 rounded(psi6);
+    const std::string subtitle = "packing fraction " + rounded(result.eta) +
+                                 ", Z = " + rounded(network.mean_contacts_of_rest) + " without " +
+                                 std::to_string(network.rattlers) +
+                                 " rattlers (grey), psi6 = " + rounded(psi6);
     if (auto failure = write_output(
             o.picture, packing_picture(scene, network, title, subtitle, r.picture_svg))) {
       std::cerr << "carom pack: error: --picture \"" << o.picture << "\": " << *failure << '\n';
@@ -329,7 +329,8 @@ Command add_pack_command(CLI::App& app) {
       "over N collisions passes --pressure-limit. The cell is sized so that the first species'\n"
       "diameter is 1 at the target (or at 0.84 when jamming).\n\n"
       "Reported: the packing fraction, the pressure, the contact network (pairs closer than the\n"
-      "tolerance times the sum of their radii; 1000/Z by default), the rattlers (fewer than 3 contacts, removed\n"
+      "tolerance times the sum of their radii; 1000/Z by default), the rattlers (fewer than 3 "
+      "contacts, removed\n"
       "again and again), Z the mean contact number of the rest (isostatic: 4) and psi6.\n"
       "Slow compression (G = 1e-4) lets equal disks crystallise; fast (G = 1e-2) jams them;\n"
       "at G above about 3e-3 the pressure can run away before every contact has formed\n"
@@ -339,7 +340,9 @@ Command add_pack_command(CLI::App& app) {
       "  carom pack --n 396 --aspect 1.0585 --rate 3e-4 --eta 0.88 --out crystal.json "
       "--picture crystal.png");
   auto o = std::make_shared<PackOptions>();
-  pack->add_option("--n", o->n, "Number of disks, at least 2")->type_name("N")->capture_default_str();
+  pack->add_option("--n", o->n, "Number of disks, at least 2")
+      ->type_name("N")
+      ->capture_default_str();
   pack->add_option("--mix", o->mix,
                    "A second species: diameter D (the first is 1) for a fraction F of the disks")
       ->type_name("D:F");

@@ -39,9 +39,9 @@ struct ContactNetwork {
     std::uint32_t a = 0;
     std::uint32_t b = 0;
   };
-  std::vector<Pair> pairs;                   // disk–disk contacts, a < b
-  std::vector<std::uint32_t> contacts;       // each disk's contacts, walls included
-  std::vector<std::uint8_t> rattler;         // 1 for a rattler
+  std::vector<Pair> pairs;              // disk–disk contacts, a < b
+  std::vector<std::uint32_t> contacts;  // each disk's contacts, walls included
+  std::vector<std::uint8_t> rattler;    // 1 for a rattler
   std::uint64_t wall_contacts = 0;
   std::uint64_t rattlers = 0;
   // The mean contact number of the disks that are not rattlers, counting only contacts between

@@ -60,11 +60,11 @@ struct CompressionSettings {
 };
 
 enum class CompressionEnd : std::uint8_t {
-  target,          // the target packing fraction was reached
-  pressure,        // jammed: the reduced pressure passed the limit
-  stalled,         // jammed: a window of collisions no longer moves the world's time on
-  collision_limit, // the collision limit came first
-  interrupted,     // the progress callback answered true, or World::request_stop
+  target,           // the target packing fraction was reached
+  pressure,         // jammed: the reduced pressure passed the limit
+  stalled,          // jammed: a window of collisions no longer moves the world's time on
+  collision_limit,  // the collision limit came first
+  interrupted,      // the progress callback answered true, or World::request_stop
 };
 
 [[nodiscard]] std::string_view compression_end_name(CompressionEnd end) noexcept;
@@ -83,10 +83,10 @@ struct CompressionResult {
   // Z = PA/(NkT) over the last window, from the collisional virial of ball–ball contacts:
   // PA = NkT + Σ σ_ij·J_ij / (2·Δt), kT the window's mean kinetic energy a disk.
   double pressure = 0.0;
-  std::uint64_t collisions = 0;    // resolved by compress
-  std::uint64_t windows = 0;       // thermostat steps
-  double thermostat_work = 0.0;    // Σ of the thermostat's changes of kinetic energy (< 0)
-  double time = 0.0;               // of the world at the end
+  std::uint64_t collisions = 0;  // resolved by compress
+  std::uint64_t windows = 0;     // thermostat steps
+  double thermostat_work = 0.0;  // Σ of the thermostat's changes of kinetic energy (< 0)
+  double time = 0.0;             // of the world at the end
 };
 
 // Compresses `world` (at least two balls, all movable, no gravity; a periodic cell or a box) as

@@ -11,6 +11,13 @@ namespace carom::web {
 
 DrawnWorld::DrawnWorld(const WorldDef& def) : scene_world_{World(def), {}, {}, {}, {}, 0.0} {}
 
+DrawnWorld::DrawnWorld(World world)
+    : scene_world_{std::move(world), {}, {}, {}, {}, 0.0},
+      colors_(scene_world_.world.ball_count()),
+      held_velocity_(scene_world_.world.ball_count()) {
+  scene_world_.balls = scene_world_.world.balls();
+}
+
 DrawnWorld::DrawnWorld(SceneWorld scene_world)
     : scene_world_(std::move(scene_world)),
       pockets_(scene_world_.scene.pockets),

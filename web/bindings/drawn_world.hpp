@@ -27,6 +27,9 @@ class DrawnWorld {
   explicit DrawnWorld(const WorldDef& def);
   // The world of a loaded scene: its balls (in scene order), walls, pockets and colours.
   explicit DrawnWorld(SceneWorld scene_world);
+  // A world built elsewhere (a packing's start, compression.hpp): its balls indexed in the order
+  // of World::balls(), the order carom::science's contact network uses.
+  explicit DrawnWorld(World world);
 
   // ---- building ----
   // Returns the ball's index (0, 1, ... in the order added).
@@ -77,6 +80,8 @@ class DrawnWorld {
   [[nodiscard]] std::vector<Arc> arcs() const;
   [[nodiscard]] const WorldDef& def() const noexcept { return scene_world_.world.def(); }
   [[nodiscard]] const World& world() const noexcept { return scene_world_.world; }
+  // For what a page runs through the library beyond step (a compression's frame).
+  [[nodiscard]] World& world() noexcept { return scene_world_.world; }
   // Contacts resolved by the last step.
   [[nodiscard]] int last_step_contacts() const;
 

@@ -1,8 +1,14 @@
-// carom web: carom::World as the "Many balls", "Galton board" and "Pinball" pages use it, through
-// DrawnWorld.
+// carom web: carom::World as the "Many balls", "Galton board", "Pinball" and "Compression" pages
+// use it, through DrawnWorld.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cstdint>
+#include <vector>
+
+#include "carom/science/contact_network.hpp"
+#include "carom/science/packing.hpp"
+#include "compression.hpp"
 #include "drawn_world.hpp"
 #include "js_error.hpp"
 #include "lattice_filling.hpp"
@@ -18,6 +24,10 @@ DrawnWorld* make_world(const WorldDef& def) {
 // The scene library's SceneError reaches the page as an Error with the same message.
 DrawnWorld* load_scene(const std::string& text, const std::string& name) {
   return guarded_call([&] { return new DrawnWorld(load_drawn_scene(text, name)); });
+}
+
+DrawnWorld* make_packing_world(const PackingStart& start) {
+  return guarded_call([&] { return new DrawnWorld(make_packing(start)); });
 }
 
 int fill(DrawnWorld& w, const LatticeFilling& filling) {
@@ -115,6 +125,56 @@ double collision_count(const DrawnWorld& w) {
 }
 std::string audit(const DrawnWorld& w) { return w.world().audit().value_or(""); }
 
+// ---- growth, the thermostat and packings (the "Compression" page) ----
+CompressionFrameResult run_compression_frame(DrawnWorld& w, const CompressionFrame& frame) {
+  return guarded_call([&] { return compress_frame(w, frame); });
+}
+void set_growth_rate(DrawnWorld& w, double rate) {
+  guarded_call([&] { w.world().set_growth_rate(rate); });
+}
+double growth_rate(const DrawnWorld& w) { return w.world().growth_rate_from_now(); }
+// Returns the work done, the change of kinetic energy.
+double set_temperature(DrawnWorld& w, double kT) {
+  return guarded_call([&] { return w.world().set_temperature(kT); });
+}
+double packing_fraction(const DrawnWorld& w) {
+  return guarded_call([&] { return science::packing_fraction(w.world()); });
+}
+double psi6(const DrawnWorld& w) {
+  return guarded_call([&] { return science::global_psi6(w.world()); });
+}
+
+// A copy in a JavaScript typed array of its own: a view of the module's memory would not outlive
+// the network.
+template <typename T>
+emscripten::val typed_copy(const std::vector<T>& values) {
+  return emscripten::val(emscripten::typed_memory_view(values.size(), values.data()))
+      .call<emscripten::val>("slice");
+}
+
+// science::find_contact_network of the world now, indexed as World::balls() (the page's ball
+// indices for a packing, and for any world no ball has left): pairs as a flat Uint32Array (a, b,
+// a, b, ...), each ball's contacts (walls included) and rattler flag, and the counts.
+emscripten::val contact_network(const DrawnWorld& w, double tolerance) {
+  const science::ContactNetwork network =
+      guarded_call([&] { return science::find_contact_network(w.world(), tolerance); });
+  std::vector<std::uint32_t> pairs;
+  pairs.reserve(2 * network.pairs.size());
+  for (const science::ContactNetwork::Pair& pair : network.pairs) {
+    pairs.push_back(pair.a);
+    pairs.push_back(pair.b);
+  }
+  emscripten::val out = emscripten::val::object();
+  out.set("pairs", typed_copy(pairs));
+  out.set("contacts", typed_copy(network.contacts));
+  out.set("rattler", typed_copy(network.rattler));
+  out.set("rattlers", static_cast<double>(network.rattlers));
+  out.set("wall_contacts", static_cast<double>(network.wall_contacts));
+  out.set("mean_contacts_of_rest", network.mean_contacts_of_rest);
+  out.set("mean_contacts", network.mean_contacts);
+  return out;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(carom_world) {
@@ -133,6 +193,30 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .field("cell_size", &WorldDef::cell_size)
       .field("gravity", &WorldDef::gravity)
       .field("rest_height", &WorldDef::rest_height);
+  value_object<PackingStart>("PackingStart")
+      .field("count", &PackingStart::count)
+      .field("second_diameter", &PackingStart::second_diameter)
+      .field("second_fraction", &PackingStart::second_fraction)
+      .field("boundary", &PackingStart::boundary)
+      .field("aspect", &PackingStart::aspect)
+      .field("start_eta", &PackingStart::start_eta)
+      .field("sized_for_eta", &PackingStart::sized_for_eta)
+      .field("seed", &PackingStart::seed);
+  value_object<CompressionFrame>("CompressionFrame")
+      .field("rate", &CompressionFrame::rate)
+      .field("kT", &CompressionFrame::kT)
+      .field("until", &CompressionFrame::until)
+      .field("collisions", &CompressionFrame::collisions)
+      .field("pressure_limit", &CompressionFrame::pressure_limit);
+  value_object<CompressionFrameResult>("CompressionFrameResult")
+      .field("collisions", &CompressionFrameResult::collisions)
+      .field("time", &CompressionFrameResult::time)
+      .field("virial", &CompressionFrameResult::virial)
+      .field("pressure", &CompressionFrameResult::pressure)
+      .field("window_pressure", &CompressionFrameResult::window_pressure)
+      .field("work", &CompressionFrameResult::work)
+      .field("over_pressure_limit", &CompressionFrameResult::over_pressure_limit)
+      .field("stalled", &CompressionFrameResult::stalled);
   value_object<LatticeFilling>("LatticeFilling")
       .field("count", &LatticeFilling::count)
       .field("packing_fraction", &LatticeFilling::packing_fraction)
@@ -140,6 +224,8 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .field("seed", &LatticeFilling::seed);
 
   emscripten::function("load_scene", &load_scene, emscripten::allow_raw_pointers());
+  emscripten::function("make_packing", &make_packing_world, emscripten::allow_raw_pointers());
+  emscripten::function("contact_tolerance_at_pressure", &science::contact_tolerance_at_pressure);
   emscripten::class_<DrawnWorld>("DrawnWorld")
       .constructor(&make_world, emscripten::allow_raw_pointers())
       .function("add_ball", &add_ball)
@@ -170,7 +256,14 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("potential_energy", &potential_energy)
       .function("momentum", &momentum)
       .function("collision_count", &collision_count)
-      .function("audit", &audit);
+      .function("audit", &audit)
+      .function("compress_frame", &run_compression_frame)
+      .function("set_growth_rate", &set_growth_rate)
+      .function("growth_rate", &growth_rate)
+      .function("set_temperature", &set_temperature)
+      .function("packing_fraction", &packing_fraction)
+      .function("psi6", &psi6)
+      .function("contact_network", &contact_network);
 }
 
 }  // namespace carom::web

@@ -1,7 +1,7 @@
 // A fixed part of a world (its box) on a canvas, y up: discs written into the pixels by
 // DiscRaster (the cost is the pixels covered, whatever the number of balls), then walls and
-// marks stroked over them with the 2D context. Drawing only: the "Galton board" and "Pinball"
-// pages hand it what carom answers.
+// marks stroked over them with the 2D context. Drawing only: the "Galton board", "Pinball" and
+// "Compression" pages hand it what carom answers.
 import {DiscRaster, packColour} from './disc_raster.js';
 
 export class WorldCanvas {
@@ -10,10 +10,15 @@ export class WorldCanvas {
     this.canvas = canvas;
     this.context = canvas.getContext('2d', {alpha: false});
     this.raster = new DiscRaster(this.context);
-    this.view = view;
     this.scale = 1;
+    this.setView(view);
+  }
+
+  // Another part of the world (a page's new world): view as for the constructor.
+  setView(view) {
+    this.view = view;
     // The page's CSS sizes the canvas from this ratio (height auto, width capped by the screen).
-    canvas.style.setProperty('--aspect', String(view.width / view.height));
+    this.canvas.style.setProperty('--aspect', String(view.width / view.height));
   }
 
   // Pixels at the device's resolution for the canvas's size on the page.

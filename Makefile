@@ -6,6 +6,7 @@
 # instructions a collision, counted by callgrind), make fuzz (the fuzz targets, 10 minutes
 # each), make format, make lint (make lint-deep with the static analyzer), make clean.
 # Browser playground: make playground (serve it; PORT=8080), make test-web, make bench-web.
+# Python: make python (build the module and install it for Debian's python3).
 
 SHELL := /bin/bash
 .ONESHELL:
@@ -21,7 +22,12 @@ RUN_PACKAGES := cmake ninja-build g++ nlohmann-json3-dev libcli11-dev libfmt-dev
 # and its sanitizer runtimes, clang-format and clang-tidy, GoogleTest and Google Benchmark, the
 # peers.
 PACKAGES := $(RUN_PACKAGES) clang clang-format clang-tidy libclang-rt-14-dev \
-            libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev
+            libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev $(PYTHON_PACKAGES)
+
+# make python: the module (pybind11, NumPy), its tests (pytest) and GSD trajectories (gsd), all
+# from Debian; Debian's python3 imports what is installed under /usr/local/lib/python3.11/dist-packages.
+PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd
+PYTHON_PREFIX := /usr/local
 
 RUN_PICTURE := build/two-moving-balls.svg
 RUN_DIR := build/run
@@ -37,7 +43,7 @@ FUZZ_SMOKE_SECONDS ?= 20
 # are), not the recipes' source.
 .SILENT: deps run-deps run
 .PHONY: wasm playground test-web bench-web
-.PHONY: fuzz-build
+.PHONY: fuzz-build python python-deps
 
 all: run
 
@@ -64,6 +70,23 @@ deps:
 
 run-deps:
 	$(call install-missing,$(RUN_PACKAGES))
+
+python-deps:
+	$(call install-missing,$(RUN_PACKAGES) $(PYTHON_PACKAGES))
+
+# Builds the Python module (preset release) and installs it where Debian's python3 imports it (as
+# root), or says how to use it from the build folder.
+python: python-deps
+	cmake --preset release >/dev/null
+	cmake --build --preset release --target carom_python
+	if [ "$$(id -u)" = 0 ]; then
+	  cmake --install build/release --component python --prefix $(PYTHON_PREFIX) >/dev/null
+	  cd /tmp && /usr/bin/python3 -c "import carom; print('carom for Python installed:', carom.__file__)"
+	else
+	  echo "Built build/release/python/carom. Use it with:"
+	  echo "  PYTHONPATH=$$PWD/build/release/python python3"
+	  echo "or install it as root: sudo make python"
+	fi
 
 run: run-deps
 	echo "Building the carom tool (preset release, in build/release):"

@@ -1,10 +1,11 @@
-// Prediction under gravity or growth: a ball's one pending event when balls move on parabolas
-// or grow (docs/engine.md, "Gravity", "Growth"). The same events as without them (contacts with
-// the balls and walls around, and leaving the cell), each time exact: two balls with the same
-// acceleration and no growth keep a linear relative motion (the quadratic of the straight-line
-// case), every other gap is a polynomial in time closed by the core's certified isolation
-// (core/accelerated_sweep.hpp), and a cell's side is reached at the root of a quadratic. Apart
-// from the straight-line parts, so that a world without either runs exactly as it did.
+// Prediction under gravity: a ball's one pending event when balls move on parabolas
+// (docs/engine.md, "Gravity"); and the events of a world with gravity or growth. The same events
+// as without gravity (contacts with the balls and walls around, and leaving the cell), each time
+// exact: two balls with the same acceleration keep a linear relative motion (the quadratic of the
+// straight-line case), every other gap is a polynomial in time closed by the core's certified
+// isolation (core/accelerated_sweep.hpp), and a cell's side is reached at the root of a
+// quadratic. Apart from the straight-line parts, so that a world without gravity runs exactly as
+// it did. (Growing balls are predicted by world_growth_prediction.cpp.)
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -12,7 +13,6 @@
 
 #include "core/accelerated_sweep.hpp"
 #include "core/circle_crossing.hpp"
-#include "core/growing_pair.hpp"
 #include "engine_tuning.hpp"
 #include "pair_batch.hpp"
 #include "world_impl.hpp"
@@ -233,18 +233,6 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
         limit * (length(v - other_velocity) + 0.5 * length(a - other_acceleration) * limit +
                  growth + other_growth);
     if (length(offset) - reach > 1.0000001 * travel) return;
-    if (other_acceleration == a) {
-      // Growing balls in straight-line motion: the pair equation's closed form, where it is
-      // clear of its rounding (else the certified isolation below decides).
-      const detail::GrowingPairClosing closing =
-          detail::growing_pair_closing(offset, v - other_velocity, reach, growth + other_growth);
-      if (closing.decided) {
-        if (closing.found && closing.t <= limit) {
-          consider(closing.t, EventKind::ball_ball, other, o.version);
-        }
-        return;
-      }
-    }
     const Impact impact = detail::accelerated_ball_ball(
         Ball{offset, radius}, motion, Ball{{}, other_radius},
         Motion{other_velocity, other_acceleration, other_growth}, limit);
@@ -298,7 +286,7 @@ bool World::Impl::process_general(const Event& event) {
       return gravity_on ? resolve_wall_under_gravity(i, event.partner, event.time)
                         : resolve_wall_under_growth(i, event.partner, event.time);
     case EventKind::cell_crossing:
-      cross_cell(i, event.partner, event.time, false);
+      cross_cell(i, event.partner, event.time, event.partner_version == detail::kClearBehind);
       return false;
     case EventKind::release:
       // (Under gravity only.) A sliding ball past its support's end (or off a curved support's

@@ -248,9 +248,16 @@ struct World::Impl : detail::BallStore {
   // the next run (docs/world.md, "Changing balls between steps").
   void repredict_changed(std::uint32_t ball);
   void predict(std::uint32_t ball);
-  // predict for a world with gravity or growth (world_gravity.cpp): every pair and wall by the
+  // predict for a world with gravity (world_gravity.cpp): every pair and wall by the
   // accelerated queries, the cell's exit by a quadratic, leaving a support by a quadratic.
   void predict_under_gravity(std::uint32_t ball);
+  // predict for a world with growth (world_growth_prediction.cpp): each pair by the pair
+  // equation's closed form where it is clear of its rounding, else by the certified isolation.
+  // `crossed`: the side of its old cell a crossing took the ball through, where its last
+  // prediction met no ball (only the three cells the crossing brings into reach are looked at),
+  // or kWholeBlock.
+  static constexpr std::uint32_t kWholeBlock = 4;
+  void predict_growing(std::uint32_t ball, std::uint32_t crossed = kWholeBlock);
 
   // ---- growth (world_growth.cpp; docs/engine.md, "Growth") ----
   // Radii as they are now become the species' radii, and t₀ now: before the rate changes, and

@@ -77,7 +77,11 @@ void World::Impl::repredict_changed(std::uint32_t ball) {
 // ball").
 void World::Impl::predict(std::uint32_t ball) {
   if (general_motion) [[unlikely]] {
-    predict_under_gravity(ball);
+    if (gravity_on) {
+      predict_under_gravity(ball);
+    } else {
+      predict_growing(ball);
+    }
     return;
   }
   Event best;

@@ -51,5 +51,29 @@ TEST(GrowingPair, TouchingAndPaceKeepingPairsAreUndecided) {
   EXPECT_DOUBLE_EQ(closing.t, 2.0);
 }
 
+TEST(GrowingPair, APairPartingFasterThanItGrowsNeverClosesWhateverItsGap) {
+  // Touching (the gap within its rounding of 0, as just after a contact), parting at 3 while the
+  // radii grow at 1: decided, no closing, as the certified isolation says.
+  const detail::GrowingPairClosing parting =
+      detail::growing_pair_closing({2.0, 0.0}, {3.0, 0.5}, 2.0, 1.0);
+  ASSERT_TRUE(parting.decided);
+  EXPECT_FALSE(parting.found);
+  const Impact certified =
+      time_of_impact_ball_ball(Ball{{2.0, 0.0}, 1.0}, Motion{{3.0, 0.5}, {}, 0.5},
+                               Ball{{0.0, 0.0}, 1.0}, Motion{{}, {}, 0.5}, 1e3);
+  EXPECT_FALSE(certified.hit);
+  // Parting slower than the radii grow: they meet again, which only the isolation reads here.
+  EXPECT_FALSE(detail::growing_pair_closing({2.0, 0.0}, {0.5, 0.0}, 2.0, 1.0).decided);
+}
+
+TEST(GrowingPair, MagnitudesOutsideTheWindowAreUndecided) {
+  // A growth speed whose square is below 2⁻⁴⁰⁰, and a distance whose square passes 2⁵⁰⁰: the
+  // rounding bounds would not hold (subnormal products, overflow), so the isolation decides.
+  EXPECT_FALSE(detail::growing_pair_closing({8.0, 0.0}, {-1.0, 0.0}, 2.0, 1e-130).decided);
+  EXPECT_FALSE(detail::growing_pair_closing({1e160, 0.0}, {-1.0, 0.0}, 2.0, 1.0).decided);
+  EXPECT_FALSE(detail::growing_pair_closing({8.0, 0.0}, {-1e160, 0.0}, 2.0, 1.0).decided);
+  EXPECT_TRUE(detail::growing_pair_closing({8.0, 0.0}, {-1.0, 0.0}, 2.0, 1e-50).decided);
+}
+
 }  // namespace
 }  // namespace carom

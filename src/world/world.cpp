@@ -499,13 +499,26 @@ double World::set_temperature(double kT) {
     if (!w.balls[i].alive() || !w.movable(i)) continue;
     relative += 0.5 * w.species_of(i).mass * length_squared(w.balls[i].velocity - drift);
   }
-  if (!(relative > 0.0)) return 0.0;
   const double before = kinetic_energy();
-  const double factor = std::sqrt(static_cast<double>(count) * kT / relative);
+  // Motion relative to the drift at the level of the drift's own rounding (one ball alone, or
+  // balls all at one velocity) is no motion: scaling it would turn rounding into a temperature.
+  const auto n = static_cast<double>(count);
+  if (!(relative > 0x1p-100 * n * n * before)) return 0.0;
+  const double factor = std::sqrt(n * kT / relative);
+  Vec2 scaled_momentum;
   for (const std::uint32_t i : w.slot_of_handle) {
     if (!w.balls[i].alive() || !w.movable(i)) continue;
     BallSlot& b = w.balls[i];
     b.velocity = drift + (b.velocity - drift) * factor;
+    scaled_momentum += b.velocity * w.species_of(i).mass;
+  }
+  // Σ m·(v − drift) is zero only to rounding, and the factor scales that rounding too: taking
+  // the difference out of every ball keeps the momentum to the rounding of one more sum.
+  const Vec2 correction = (scaled_momentum - momentum) / mass;
+  for (const std::uint32_t i : w.slot_of_handle) {
+    if (!w.balls[i].alive() || !w.movable(i)) continue;
+    BallSlot& b = w.balls[i];
+    b.velocity -= correction;
     ++b.version;
     if (w.gravity_on) w.disturb(i);  // a resting ball that moves rests no more
   }

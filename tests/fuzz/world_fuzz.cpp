@@ -365,6 +365,8 @@ class Harness {
   }
 
   void set_velocity() {
+    // A growing world is driven anyway; half its velocity calls are a thermostat's step instead.
+    if (def_.growth_rate != 0.0 && in_.byte() % 2 == 0) return set_temperature();
     const BallId id = some_ball();
     Vec2 v = velocity(in_);
     if (id.is_null()) return;
@@ -380,6 +382,51 @@ class Harness {
     world().set_velocity(id, v);
     check(world().velocity(id) == v, "set_velocity did not set it");
     if (world().mass(id) == carom::kImmovable && (v.x != 0.0 || v.y != 0.0)) driven_ = true;
+    reset_energy();
+  }
+
+  // World::set_temperature: the movable balls' kinetic energy about their centre of mass becomes
+  // kT a ball (when they move relative to it at all), the momentum stays.
+  void set_temperature() {
+    static constexpr double kTemperatures[] = {0.01, 1.0, 4.0};
+    const double kT = in_.pick(kTemperatures);
+    CAROM_TRACE("set_temperature(%.17g)\n", kT);
+    double mass = 0.0;
+    double count = 0.0;
+    // Σ m·|v|, before and after: the momentum's rounding is relative to it, not to |P|, which
+    // fast balls moving against each other can make small.
+    const auto momentum_scale = [this] {
+      double scale = 0.0;
+      for (const BallId id : world().balls()) {
+        if (world().mass(id) == carom::kImmovable) continue;
+        scale += world().mass(id) * carom::length(world().velocity(id));
+      }
+      return scale;
+    };
+    for (const BallId id : world().balls()) {
+      if (world().mass(id) == carom::kImmovable) continue;
+      mass += world().mass(id);
+      count += 1.0;
+    }
+    const double scale_before = momentum_scale();
+    const Vec2 momentum = world().momentum();
+    const double before = world().kinetic_energy();
+    const double work = world().set_temperature(kT);
+    const double after = world().kinetic_energy();
+    check(std::abs(after - before - work) <= 1e-9 * (before + after + 1.0),
+          "set_temperature's work is not the change of kinetic energy");
+    check(carom::length(world().momentum() - momentum) <=
+              1e-9 * (scale_before + momentum_scale() + 1e-300),
+          "set_temperature changed the momentum");
+    if (count == 0.0) return reset_energy();
+    const double internal_before = before - carom::dot(momentum, momentum) / (2.0 * mass);
+    if (internal_before > 1e-12 * before) {
+      const double internal = after - carom::dot(momentum, momentum) / (2.0 * mass);
+      check(std::abs(internal - count * kT) <= 1e-6 * count * kT,
+            "set_temperature did not reach kT a ball");
+      // A strong cooling leaves balls with the rounding of their old speeds (see set_velocity).
+      if (after * 256.0 < before && world().time() > 0.0) slowed_ = true;
+    }
     reset_energy();
   }
 

@@ -5,7 +5,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
+#include <span>
+
 #include "carom/vec2.hpp"
+#include "carom/world.hpp"
 
 namespace carom::python {
 
@@ -13,6 +17,15 @@ namespace py = pybind11;
 
 void bind_core(py::module_& m);
 void bind_world(py::module_& m);
+void bind_scene(py::module_& m);
+void bind_science(py::module_& m);
+
+// A ball's id as Python holds it: one integer, generation above index.
+std::uint64_t id_number(BallId id);
+// Contacts as the structured array World.contacts gives.
+py::array contacts_array(std::span<const ContactEvent> contacts);
+// A World handed to Python as a carom.World.
+py::object wrap_world(World&& world);
 
 // A NumPy array of doubles, C-contiguous (converted if need be).
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;

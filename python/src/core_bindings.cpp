@@ -14,9 +14,9 @@
 namespace carom::python {
 namespace {
 
-using BallTuple = std::tuple<double, double, double>;                     // (x, y, r)
-using SegmentTuple = std::tuple<Vec2, Vec2>;                              // (a, b)
-using ArcTuple = std::tuple<double, double, double, double, double>;      // (x, y, r, θ₀, θ₁)
+using BallTuple = std::tuple<double, double, double>;                 // (x, y, r)
+using SegmentTuple = std::tuple<Vec2, Vec2>;                          // (a, b)
+using ArcTuple = std::tuple<double, double, double, double, double>;  // (x, y, r, θ₀, θ₁)
 
 Ball ball_of(const BallTuple& b) { return {{std::get<0>(b), std::get<1>(b)}, std::get<2>(b)}; }
 Segment segment_of(const SegmentTuple& s) { return {std::get<0>(s), std::get<1>(s)}; }
@@ -109,8 +109,7 @@ void bind_core(py::module_& m) {
       [](const BallTuple& a, Vec2 move_a, const SegmentTuple& segment) {
         return sweep_ball_segment(ball_of(a), move_a, segment_of(segment));
       },
-      py::arg("a"), py::arg("move_a"), py::arg("segment"),
-      "segment = ((x0, y0), (x1, y1))");
+      py::arg("a"), py::arg("move_a"), py::arg("segment"), "segment = ((x0, y0), (x1, y1))");
   m.def(
       "sweep_ball_arc",
       [](const BallTuple& a, Vec2 move_a, const ArcTuple& arc) {
@@ -127,15 +126,14 @@ void bind_core(py::module_& m) {
   // ---- time form ----
   m.def(
       "time_of_impact_ball_ball",
-      [](const BallTuple& a, Vec2 velocity_a, const BallTuple& b, Vec2 velocity_b,
-         double horizon, Vec2 acceleration_a, Vec2 acceleration_b, double growth_a,
-         double growth_b) {
+      [](const BallTuple& a, Vec2 velocity_a, const BallTuple& b, Vec2 velocity_b, double horizon,
+         Vec2 acceleration_a, Vec2 acceleration_b, double growth_a, double growth_b) {
         return time_of_impact_ball_ball(ball_of(a), Motion(velocity_a, acceleration_a, growth_a),
                                         ball_of(b), Motion(velocity_b, acceleration_b, growth_b),
                                         horizon);
       },
-      py::arg("a"), py::arg("velocity_a"), py::arg("b"), py::arg("velocity_b"),
-      py::arg("horizon"), py::arg("acceleration_a") = Vec2{}, py::arg("acceleration_b") = Vec2{},
+      py::arg("a"), py::arg("velocity_a"), py::arg("b"), py::arg("velocity_b"), py::arg("horizon"),
+      py::arg("acceleration_a") = Vec2{}, py::arg("acceleration_b") = Vec2{},
       py::arg("growth_a") = 0.0, py::arg("growth_b") = 0.0,
       "The first contact within [0, horizon] of two balls moving with these velocities "
       "(constant accelerations and radius growth speeds optional: exact, by certified root "
@@ -160,8 +158,8 @@ void bind_core(py::module_& m) {
       py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0);
   m.def(
       "time_of_impact_ball_arc",
-      [](const BallTuple& a, Vec2 velocity, const ArcTuple& arc, double horizon,
-         Vec2 acceleration, double growth) {
+      [](const BallTuple& a, Vec2 velocity, const ArcTuple& arc, double horizon, Vec2 acceleration,
+         double growth) {
         return time_of_impact_ball_arc(ball_of(a), Motion(velocity, acceleration, growth),
                                        arc_of(arc), horizon);
       },

@@ -43,4 +43,9 @@ PYBIND11_MODULE(_carom, m) {
   m.attr("IMMOVABLE") = carom::kImmovable;
   carom::python::bind_core(m);
   carom::python::bind_world(m);
+  carom::python::bind_scene(m);
+#ifdef CAROM_PYTHON_GAS
+  // Built with the command-line tool, whose gas code these share.
+  carom::python::bind_science(m);
+#endif
 }

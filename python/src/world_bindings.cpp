@@ -19,15 +19,17 @@
 #include "carom/world.hpp"
 
 namespace carom::python {
-namespace {
 
 // A ball's handle as one integer, generation above index, so that ids travel in NumPy arrays
 // (uint64) and a stale one stays stale.
 std::uint64_t id_number(BallId id) {
   return (static_cast<std::uint64_t>(id.generation) << 32U) | id.index;
 }
+
+namespace {
 BallId id_of(std::uint64_t number) {
-  return {static_cast<std::uint32_t>(number & 0xffffffffU), static_cast<std::uint32_t>(number >> 32U)};
+  return {static_cast<std::uint32_t>(number & 0xffffffffU),
+          static_cast<std::uint32_t>(number >> 32U)};
 }
 
 Boundary boundary_of(const std::string& name) {
@@ -306,8 +308,9 @@ Placement placement_of(const std::string& name) {
   throw py::value_error("placement must be \"refuse\" or \"nearest_free\", not \"" + name + "\"");
 }
 
-py::array contacts_of(const World& world) {
-  const std::span<const ContactEvent> contacts = world.contacts();
+}  // namespace
+
+py::array contacts_array(std::span<const ContactEvent> contacts) {
   const py::dtype dtype = contact_dtype();
   if (dtype.itemsize() != static_cast<py::ssize_t>(sizeof(ContactRecord))) {
     throw std::logic_error("the contact record's layout differs from its NumPy dtype");
@@ -332,6 +335,12 @@ py::array contacts_of(const World& world) {
   }
   return out;
 }
+
+py::object wrap_world(World&& world) { return py::cast(PyWorld(std::move(world))); }
+
+namespace {
+
+py::array contacts_of(const World& world) { return contacts_array(world.contacts()); }
 
 py::bytes save_bytes(const World& world) {
   std::ostringstream out(std::ios::binary);
@@ -379,14 +388,17 @@ void bind_world(py::module_& m) {
           "remove_ball", [](PyWorld& w, std::uint64_t id) { w.world().remove_ball(id_of(id)); },
           py::arg("id"))
       .def(
-          "contains", [](const PyWorld& w, std::uint64_t id) { return w.world().contains(id_of(id)); },
+          "contains",
+          [](const PyWorld& w, std::uint64_t id) { return w.world().contains(id_of(id)); },
           py::arg("id"))
       .def("__len__", [](const PyWorld& w) { return w.world().ball_count(); })
       // ---- walls ----
       .def(
           "add_segment",
-          [](PyWorld& w, Vec2 a, Vec2 b) { return w.world().add_segment({a, b}); }, py::arg("a"),
-          py::arg("b"))
+          [](PyWorld& w, Vec2 a, Vec2 b) {
+            return w.world().add_segment({a, b});
+          },
+          py::arg("a"), py::arg("b"))
       .def(
           "add_polyline",
           [](PyWorld& w, const std::vector<Vec2>& points, bool closed) {
@@ -431,10 +443,11 @@ void bind_world(py::module_& m) {
       .def_property(
           "contact_recording", [](const PyWorld& w) { return w.world().contact_recording(); },
           [](PyWorld& w, bool on) { w.world().set_contact_recording(on); })
-      .def_property_readonly("contacts", [](const PyWorld& w) { return contacts_of(w.world()); },
-                             "The last run's contacts as a structured array (time, kind: 0 "
-                             "ball-ball 1 ball-wall, a, b, wall, point, normal, approach_speed, "
-                             "impulse)")
+      .def_property_readonly(
+          "contacts", [](const PyWorld& w) { return contacts_of(w.world()); },
+          "The last run's contacts as a structured array (time, kind: 0 "
+          "ball-ball 1 ball-wall, a, b, wall, point, normal, approach_speed, "
+          "impulse)")
       // ---- state ----
       .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); })
       .def_property_readonly("ids",
@@ -457,21 +470,23 @@ void bind_world(py::module_& m) {
                                return points_of(w.world(),
                                                 [&](BallId id) { return w.world().velocity(id); });
                              })
-      .def_property_readonly(
-          "radii",
-          [](const PyWorld& w) {
-            return values_of(w.world(), [&](BallId id) { return w.world().radius(id); });
-          })
-      .def_property_readonly(
-          "masses",
-          [](const PyWorld& w) {
-            return values_of(w.world(), [&](BallId id) { return w.world().mass(id); });
-          })
+      .def_property_readonly("radii",
+                             [](const PyWorld& w) {
+                               return values_of(w.world(),
+                                                [&](BallId id) { return w.world().radius(id); });
+                             })
+      .def_property_readonly("masses",
+                             [](const PyWorld& w) {
+                               return values_of(w.world(),
+                                                [&](BallId id) { return w.world().mass(id); });
+                             })
       .def(
-          "position", [](const PyWorld& w, std::uint64_t id) { return w.world().position(id_of(id)); },
+          "position",
+          [](const PyWorld& w, std::uint64_t id) { return w.world().position(id_of(id)); },
           py::arg("id"))
       .def(
-          "velocity", [](const PyWorld& w, std::uint64_t id) { return w.world().velocity(id_of(id)); },
+          "velocity",
+          [](const PyWorld& w, std::uint64_t id) { return w.world().velocity(id_of(id)); },
           py::arg("id"))
       .def(
           "radius", [](const PyWorld& w, std::uint64_t id) { return w.world().radius(id_of(id)); },
@@ -553,8 +568,7 @@ void bind_world(py::module_& m) {
                       [](const py::bytes& data) { return load_bytes(data); }))
       // ---- checking ----
       .def(
-          "audit",
-          [](const PyWorld& w, double tolerance) { return w.world().audit(tolerance); },
+          "audit", [](const PyWorld& w, double tolerance) { return w.world().audit(tolerance); },
           py::arg("tolerance") = 1e-9,
           "None when no two balls overlap (and every ball is inside a box), else what is wrong");
 }

@@ -19,6 +19,7 @@ void bind_core(py::module_& m);
 void bind_world(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_science(py::module_& m);
+void bind_packing(py::module_& m);
 
 // A ball's id as Python holds it: one integer, generation above index.
 std::uint64_t id_number(BallId id);
@@ -26,6 +27,8 @@ std::uint64_t id_number(BallId id);
 py::array contacts_array(std::span<const ContactEvent> contacts);
 // A World handed to Python as a carom.World.
 py::object wrap_world(World&& world);
+// The World inside a carom.World (throws a cast error for anything else).
+World& unwrap_world(py::handle world);
 
 // A NumPy array of doubles, C-contiguous (converted if need be).
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;

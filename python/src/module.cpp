@@ -44,6 +44,7 @@ PYBIND11_MODULE(_carom, m) {
   carom::python::bind_core(m);
   carom::python::bind_world(m);
   carom::python::bind_scene(m);
+  carom::python::bind_packing(m);
 #ifdef CAROM_PYTHON_GAS
   // Built with the command-line tool, whose gas code these share.
   carom::python::bind_science(m);

@@ -338,6 +338,8 @@ py::array contacts_array(std::span<const ContactEvent> contacts) {
 
 py::object wrap_world(World&& world) { return py::cast(PyWorld(std::move(world))); }
 
+World& unwrap_world(py::handle world) { return world.cast<PyWorld&>().world(); }
+
 namespace {
 
 py::array contacts_of(const World& world) { return contacts_array(world.contacts()); }

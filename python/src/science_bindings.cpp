@@ -12,6 +12,7 @@
 #include "gas/gas_report.hpp"
 #include "gas/gas_session.hpp"
 #include "options/usage_error.hpp"
+#include "pack/pack_session.hpp"
 
 namespace carom::python {
 namespace {
@@ -95,9 +96,66 @@ py::object eos(const std::vector<py::object>& etas, const py::object& n,
   return json_value(json);
 }
 
+// A packing made as `carom pack --json` makes it. Ctrl-C stops it at the next window (the
+// report then says end = "interrupted").
+py::object pack(const py::object& n, const py::object& mix, const std::string& boundary,
+                const py::object& aspect, const py::object& rate, const py::object& eta,
+                const py::object& start_eta, const py::object& pressure_limit,
+                const py::object& contact_tolerance, const py::object& seed) {
+  cli::PackOptions o;
+  o.n = py::str(n);
+  if (py::isinstance<py::str>(mix)) {
+    o.mix = mix.cast<std::string>();
+  } else if (!mix.is_none()) {
+    const py::sequence pair = mix.cast<py::sequence>();
+    if (pair.size() != 2) throw py::value_error("mix must be \"D:F\" or a pair (D, F)");
+    o.mix = std::string(py::str(pair[0])) + ":" + std::string(py::str(pair[1]));
+  }
+  o.boundary = boundary;
+  o.aspect = py::str(aspect);
+  o.rate = py::str(rate);
+  o.until_jammed = eta.is_none();
+  if (!eta.is_none()) o.eta = py::str(eta);
+  o.start_eta = py::str(start_eta);
+  o.pressure_limit = py::str(pressure_limit);
+  if (!contact_tolerance.is_none()) o.tolerance = py::str(contact_tolerance);
+  o.seed = py::str(seed);
+  std::string json;
+  try {
+    const cli::PackRequest r = cli::parse_pack_options(o);
+    bool signalled = false;
+    {
+      const py::gil_scoped_release unlocked;
+      const cli::PackOutcome outcome =
+          cli::run_pack_session(o, r, {}, [&signalled](const science::CompressionProgress&) {
+            const py::gil_scoped_acquire locked;
+            // The interrupt is raised once the world is consistent, below.
+            if (!signalled && PyErr_CheckSignals() != 0) {
+              signalled = true;
+              PyErr_Clear();
+            }
+            return signalled;
+          });
+      json = cli::pack_json(o, r, outcome).dump();
+    }
+    if (signalled) {
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+      throw py::error_already_set();
+    }
+  } catch (const cli::UsageError& error) {
+    raise_usage(error);
+  }
+  return json_value(json);
+}
+
 }  // namespace
 
 void bind_science(py::module_& m) {
+  m.def("pack", &pack, py::kw_only(), py::arg("n") = 1000, py::arg("mix") = py::none(),
+        py::arg("boundary") = "periodic", py::arg("aspect") = 1.0, py::arg("rate") = 0.002,
+        py::arg("eta") = py::none(), py::arg("start_eta") = 0.3, py::arg("pressure_limit") = 1e12,
+        py::arg("contact_tolerance") = py::none(), py::arg("seed") = 1,
+        "A packing as `carom pack --json` makes it (eta None: until jammed): the same dict");
   m.def("gas", &gas, py::arg("n") = 400, py::arg("eta") = 0.3, py::arg("equilibrate") = 50,
         py::arg("collisions") = 500, py::arg("seed") = 1, py::arg("blocks") = 16,
         py::arg("mix") = py::none(), py::arg("start") = "lattice",

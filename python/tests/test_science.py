@@ -94,3 +94,15 @@ def test_a_bad_argument_is_named(argument, value):
 def test_eos_names_a_bad_point():
     with pytest.raises(ValueError, match="^eta = "):
         carom.eos([0.2, 1.5], n=64, collisions=40)
+
+
+def test_pack_gives_what_carom_pack_json_gives():
+    ours = carom.pack(n=120, mix=(1.4, 0.5), rate=0.01, pressure_limit=1e8, seed=3)
+    theirs = tool_json("pack", "--n", "120", "--mix", "1.4:0.5", "--rate", "0.01",
+                       "--until-jammed", "--pressure-limit", "1e8", "--seed", "3", "-q")
+    same_numbers(ours, theirs)
+    assert ours["jammed"] and ours["end"] == "pressure"
+    with pytest.raises(ValueError, match="rate"):
+        carom.pack(n=100, rate=-1.0)
+    with pytest.raises(ValueError, match="eta"):
+        carom.pack(n=100, eta=0.95)

@@ -92,7 +92,9 @@ struct CompressionResult {
 // Compresses `world` (at least two balls, all movable, no gravity; a periodic cell or a box) as
 // the settings say; the progress callback is called once a window and stops the run by answering
 // true. On return growth is off (rate 0) and the velocities are at kT, so the world is a packing
-// at rest in size, ready to be saved or run on. Throws InvalidArgument for settings out of range.
+// at rest in size, ready to be saved or run on. It measures the pressure through the world's stop
+// condition and contact recording, so it leaves the world with no stop condition and recording as
+// it found it. Throws InvalidArgument for settings out of range.
 CompressionResult compress(World& world, const CompressionSettings& settings,
                            const std::function<bool(const CompressionProgress&)>& progress = {});
 

@@ -11,6 +11,8 @@
 
 #if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
 #include <immintrin.h>
+
+#include "cpu_avx2.hpp"
 #define CAROM_GROWING_BATCH_AVX2 1
 #endif
 
@@ -126,21 +128,13 @@ __attribute__((target("avx2"))) void solve_avx2(GrowingPairBatch& batch) {
   batch.undecided = undecided & used;
 }
 
-// Whether this CPU (and its operating system) runs AVX2, asked once, at load time: before the
-// runtime library's own constructor may have run, hence __builtin_cpu_init first.
-bool cpu_has_avx2() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") != 0;
-}
-const bool kHasAvx2 = cpu_has_avx2();
-
 #endif
 
 }  // namespace
 
 void GrowingPairBatch::solve() {
 #ifdef CAROM_GROWING_BATCH_AVX2
-  if (kHasAvx2) {
+  if (kCpuHasAvx2) {
     solve_avx2(*this);
     return;
   }

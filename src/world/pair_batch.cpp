@@ -14,6 +14,8 @@
 
 #if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
 #include <immintrin.h>
+
+#include "cpu_avx2.hpp"
 #define CAROM_PAIR_BATCH_AVX2 1
 #endif
 
@@ -221,21 +223,13 @@ __attribute__((target("avx2"))) void solve_slots_avx2(PairBatch& batch, const Ba
   batch.rescales = rescales & used;
 }
 
-// Whether this CPU (and its operating system) runs AVX2, asked once, at load time: before the
-// runtime library's own constructor may have run, hence __builtin_cpu_init first.
-bool cpu_has_avx2() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") != 0;
-}
-const bool kHasAvx2 = cpu_has_avx2();
-
 #endif
 
 }  // namespace
 
 void PairBatch::solve(double horizon) {
 #ifdef CAROM_PAIR_BATCH_AVX2
-  if (kHasAvx2) {
+  if (kCpuHasAvx2) {
     solve_avx2(*this, horizon);
     return;
   }
@@ -275,7 +269,7 @@ template <bool kTwoBalls>
 void solve_named(PairBatch& batch, const BallSlot* slots, const SlotQuery& first,
                  const SlotQuery& second, std::uint32_t second_lanes) {
 #ifdef CAROM_PAIR_BATCH_AVX2
-  if (kHasAvx2) {
+  if (kCpuHasAvx2) {
     if (first.species == nullptr) {
       solve_slots_avx2<true, kTwoBalls>(batch, slots, first, second, second_lanes);
     } else {

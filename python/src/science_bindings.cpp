@@ -3,12 +3,15 @@
 // same keys and, for the same arguments, the same numbers bit for bit.
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <exception>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
 #include "gas/gas_options.hpp"
+#include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
 #include "gas/gas_session.hpp"
 #include "options/usage_error.hpp"
@@ -52,48 +55,120 @@ py::object json_value(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
-py::object gas(const py::object& n, const py::object& eta, const py::object& equilibrate,
-               const py::object& collisions, const py::object& seed, const py::object& blocks,
-               const py::object& mix, const std::string& start) {
+// Runs the points as `carom eos` runs them, the GIL released. Ctrl-C stops every point within a
+// few thousand events (the calling thread looks for it ten times a second) and raises
+// KeyboardInterrupt; an error in a point is raised once all have stopped.
+std::vector<cli::GasOutcome> run_points(const std::vector<cli::GasSpec>& specs,
+                                        std::size_t threads) {
+  std::atomic<bool> signalled{false};
+  cli::GasPointsOutcome run;
+  {
+    const py::gil_scoped_release unlocked;
+    run = cli::run_gas_points(
+        specs, threads, [&signalled] { return signalled.load(); },
+        [&signalled](double) {
+          const py::gil_scoped_acquire locked;
+          if (PyErr_CheckSignals() != 0) {
+            PyErr_Clear();
+            signalled.store(true);
+          }
+        });
+  }
+  if (signalled.load()) {
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+  for (const std::exception_ptr& failure : run.failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+  return std::move(run.outcomes);
+}
+
+cli::GasSpec gas_spec(const py::object& n, const py::object& eta, const py::object& equilibrate,
+                      const py::object& collisions, const py::object& seed,
+                      const py::object& blocks, const py::object& mix, const std::string& start) {
   const cli::GasOptionText text =
       option_text(n, eta, equilibrate, collisions, seed, blocks, mix, start);
-  cli::GasSpec spec;
   try {
-    spec = cli::parse_gas_spec(text);
+    return cli::parse_gas_spec(text);
   } catch (const cli::UsageError& error) {
     raise_usage(error);
   }
-  std::string json;
-  {
-    const py::gil_scoped_release unlocked;
-    json = cli::gas_json(spec, cli::run_gas_session(spec)).dump();
+}
+
+py::object gas(const py::object& n, const py::object& eta, const py::object& equilibrate,
+               const py::object& collisions, const py::object& seed, const py::object& blocks,
+               const py::object& mix, const std::string& start) {
+  const cli::GasSpec spec = gas_spec(n, eta, equilibrate, collisions, seed, blocks, mix, start);
+  const std::vector<cli::GasOutcome> outcomes = run_points({spec}, 1);
+  return json_value(cli::gas_json(spec, outcomes.front()).dump());
+}
+
+// An (x, y) curve as a pair of arrays.
+py::tuple curve_arrays(const science::Curve& curve) {
+  return py::make_tuple(
+      py::array_t<double>(static_cast<py::ssize_t>(curve.x.size()), curve.x.data()),
+      py::array_t<double>(static_cast<py::ssize_t>(curve.y.size()), curve.y.data()));
+}
+
+// What gas() reports, with the distributions and the last configuration it measured as arrays.
+struct GasMeasurement {
+  py::object report;
+  py::tuple rdf, speed, psi6_local, msd;
+  py::array positions, radii, psi6_modulus, psi6_angle;
+};
+
+GasMeasurement measure_gas(const py::object& n, const py::object& eta,
+                           const py::object& equilibrate, const py::object& collisions,
+                           const py::object& seed, const py::object& blocks, const py::object& mix,
+                           const std::string& start) {
+  const cli::GasSpec spec = gas_spec(n, eta, equilibrate, collisions, seed, blocks, mix, start);
+  const std::vector<cli::GasOutcome> outcomes = run_points({spec}, 1);
+  const science::GasResults& r = outcomes.front().results;
+  GasMeasurement m;
+  m.report = json_value(cli::gas_json(spec, outcomes.front()).dump());
+  m.rdf = curve_arrays(r.rdf);
+  m.speed = curve_arrays(r.speed);
+  m.psi6_local = curve_arrays(r.psi6_local);
+  m.msd = curve_arrays(r.msd);
+  py::array_t<double> positions(
+      {static_cast<py::ssize_t>(r.final_positions.size()), py::ssize_t{2}});
+  auto xy = positions.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < xy.shape(0); ++i) {
+    xy(i, 0) = r.final_positions[static_cast<std::size_t>(i)].x;
+    xy(i, 1) = r.final_positions[static_cast<std::size_t>(i)].y;
   }
-  return json_value(json);
+  m.positions = positions;
+  const auto vector_array = [](const std::vector<double>& v) {
+    return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+  };
+  m.radii = vector_array(r.final_radii);
+  m.psi6_modulus = vector_array(r.final_psi6_modulus);
+  m.psi6_angle = vector_array(r.final_psi6_angle);
+  return m;
 }
 
 py::object eos(const std::vector<py::object>& etas, const py::object& n,
                const py::object& equilibrate, const py::object& collisions, const py::object& seed,
-               const py::object& blocks, const py::object& mix, const std::string& start) {
+               const py::object& blocks, const py::object& mix, const std::string& start,
+               const py::object& threads) {
   const cli::GasOptionText text =
       option_text(n, py::float_(0.0), equilibrate, collisions, seed, blocks, mix, start);
   std::vector<cli::GasSpec> specs;
+  std::uint64_t thread_count = 0;
   try {
     for (const py::object& eta : etas) {
       specs.push_back(cli::parse_gas_spec(text, eta.cast<double>(), py::str(eta)));
     }
+    thread_count = cli::parse_eos_threads(py::str(threads));
   } catch (const cli::UsageError& error) {
     raise_usage(error);
   }
-  std::string json;
-  {
-    const py::gil_scoped_release unlocked;
-    nlohmann::json points = nlohmann::json::array();
-    for (const cli::GasSpec& spec : specs) {
-      points.push_back(cli::gas_json(spec, cli::run_gas_session(spec)));
-    }
-    json = nlohmann::json{{"points", points}}.dump();
-  }
-  return json_value(json);
+  const std::vector<cli::GasOutcome> outcomes = run_points(specs, thread_count);
+  nlohmann::json points = nlohmann::json::array();
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    points.push_back(cli::gas_json(specs[i], outcomes[i]));
+  return json_value(nlohmann::json{{"points", points}}.dump());
 }
 
 // A packing made as `carom pack --json` makes it. Ctrl-C stops it at the next window (the
@@ -156,6 +231,25 @@ void bind_science(py::module_& m) {
         py::arg("eta") = py::none(), py::arg("start_eta") = 0.3, py::arg("pressure_limit") = 1e12,
         py::arg("contact_tolerance") = py::none(), py::arg("seed") = 1,
         "A packing as `carom pack --json` makes it (eta None: until jammed): the same dict");
+  py::class_<GasMeasurement>(m, "GasMeasurement",
+                             "What carom.gas reports (report, the same dict), with the "
+                             "distributions as (x, y) arrays and the last configuration measured")
+      .def_readonly("report", &GasMeasurement::report, "The dict carom.gas returns")
+      .def_readonly("rdf", &GasMeasurement::rdf, "g(r): (r, g), r at the bins' centres")
+      .def_readonly("speed", &GasMeasurement::speed, "(speed, probability density)")
+      .def_readonly("psi6_local", &GasMeasurement::psi6_local,
+                    "(|psi6_j|, probability density) of the local bond order")
+      .def_readonly("msd", &GasMeasurement::msd, "(lag, mean-square displacement)")
+      .def_readonly("positions", &GasMeasurement::positions,
+                    "(N, 2) positions, wrapped into the cell, at the last structure sample")
+      .def_readonly("radii", &GasMeasurement::radii, "(N,) radii")
+      .def_readonly("psi6_modulus", &GasMeasurement::psi6_modulus, "(N,) |psi6_j|")
+      .def_readonly("psi6_angle", &GasMeasurement::psi6_angle,
+                    "(N,) arg psi6_j in (-pi, pi]; 0 where a disk has no neighbour");
+  m.def("measure_gas", &measure_gas, py::kw_only(), py::arg("n") = 400, py::arg("eta") = 0.3,
+        py::arg("equilibrate") = 50, py::arg("collisions") = 500, py::arg("seed") = 1,
+        py::arg("blocks") = 16, py::arg("mix") = py::none(), py::arg("start") = "lattice",
+        "carom.gas's run, with g(r), the speed, psi6 and MSD distributions as arrays");
   m.def("gas", &gas, py::arg("n") = 400, py::arg("eta") = 0.3, py::arg("equilibrate") = 50,
         py::arg("collisions") = 500, py::arg("seed") = 1, py::arg("blocks") = 16,
         py::arg("mix") = py::none(), py::arg("start") = "lattice",
@@ -163,7 +257,8 @@ void bind_science(py::module_& m) {
   m.def("eos", &eos, py::arg("etas"), py::kw_only(), py::arg("n") = 400,
         py::arg("equilibrate") = 50, py::arg("collisions") = 500, py::arg("seed") = 1,
         py::arg("blocks") = 16, py::arg("mix") = py::none(), py::arg("start") = "lattice",
-        "The equation of state at each packing fraction in etas, one after the other, as "
+        py::arg("threads") = 2,
+        "The equation of state at each packing fraction in etas, `threads` points at once, as "
         "`carom eos --json`: {\"points\": [one gas() dict per point]}");
 }
 

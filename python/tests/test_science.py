@@ -6,8 +6,12 @@ import math
 import os
 import pathlib
 import shutil
+import signal
 import subprocess
+import threading
+import time
 
+import numpy as np
 import pytest
 
 import carom
@@ -106,3 +110,72 @@ def test_pack_gives_what_carom_pack_json_gives():
         carom.pack(n=100, rate=-1.0)
     with pytest.raises(ValueError, match="eta"):
         carom.pack(n=100, eta=0.95)
+
+
+def test_eos_threads_change_nothing_but_the_wall_time():
+    options = dict(n=64, equilibrate=5, collisions=40, seed=3, blocks=4)
+    one = carom.eos([0.1, 0.2, 0.3], threads=1, **options)
+    two = carom.eos([0.1, 0.2, 0.3], threads=2, **options)
+    for a, b in zip(one["points"], two["points"]):
+        same_numbers(a, b)
+    with pytest.raises(ValueError, match="^threads = 0: between 1 and 256"):
+        carom.eos([0.2], threads=0, **options)
+
+
+# Long enough that the signal lands in the middle (several seconds uninterrupted).
+LONG_GAS = dict(n=4000, eta=0.5, equilibrate=20, collisions=4000, seed=1)
+
+
+@pytest.mark.parametrize("run", [
+    lambda: carom.gas(**LONG_GAS),
+    lambda: carom.measure_gas(**LONG_GAS),
+    lambda: carom.eos([0.4, 0.5], threads=2, **{k: v for k, v in LONG_GAS.items() if k != "eta"}),
+], ids=["gas", "measure_gas", "eos"])
+def test_ctrl_c_stops_a_gas_in_the_middle(run):
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        run()
+    timer.join()
+    assert time.monotonic() - start < 2.0
+
+
+def test_a_gas_lets_other_threads_run():
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    try:
+        carom.gas(n=1000, eta=0.4, equilibrate=10, collisions=300, seed=2)
+    finally:
+        stop.set()
+        counter.join()
+    # The gas runs for a good part of a second; a thread blocked by the GIL would not tick.
+    assert len(ticks) > 20
+
+
+def test_measure_gas_gives_the_distributions_as_arrays():
+    m = carom.measure_gas(n=200, eta=0.5, equilibrate=10, collisions=200, seed=2, blocks=4)
+    same_numbers(m.report, carom.gas(n=200, eta=0.5, equilibrate=10, collisions=200, seed=2,
+                                     blocks=4))
+    r, g = m.rdf
+    assert r.shape == g.shape and r.ndim == 1 and len(r) > 50
+    # g(r) at contact is the contact value the report gives from the collision rate, within
+    # the noise of a short run; far out it tends to 1.
+    assert g[0] == pytest.approx(m.report["g_contact"], rel=0.15)
+    assert abs(g[-20:].mean() - 1.0) < 0.1
+    speed, density = m.speed
+    assert np.sum(density) * (speed[1] - speed[0]) == pytest.approx(1.0, abs=1e-9)
+    assert m.positions.shape == (200, 2) and m.radii.shape == (200,)
+    assert np.all((m.psi6_modulus >= 0) & (m.psi6_modulus <= 1 + 1e-12))
+    # The last sample's global order, |mean of psi6_j|, is small in a fluid, as the report's
+    # average over every sample is.
+    last = abs(np.mean(m.psi6_modulus * np.exp(1j * m.psi6_angle)))
+    assert last < 0.25 and m.report["psi6"] < 0.25

@@ -1,8 +1,6 @@
 #include "commands/eos_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -10,13 +8,13 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "carom/science/exact.hpp"
 #include "commands/gas_command.hpp"
 #include "drawing/science_plot.hpp"
 #include "gas/gas_options.hpp"
+#include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
 #include "gas/gas_session.hpp"
 #include "options/exit_codes.hpp"
@@ -32,7 +30,6 @@ namespace {
 
 // More points than this is a typo in the step (0.0001 for 0.01), not a sweep.
 constexpr std::size_t kMostPoints = 1000;
-constexpr std::uint64_t kMostThreads = 256;
 // A sweep's points are rounded to the decimals its numbers are written with, at most this many
 // (a double holds 15 to 17 significant digits; packing fractions are below 1).
 constexpr std::size_t kMostDecimals = 15;
@@ -151,51 +148,18 @@ int run(const EosOptions& options) {
   std::vector<GasSpec> specs;
   specs.reserve(etas.size());
   for (const double eta : etas) specs.push_back(parse_gas_spec(options.gas, eta, options.etas));
-  const std::uint64_t threads =
-      parse_whole_number({"--threads", options.threads, "a whole number >= 1"});
-  if (threads < 1 || threads > kMostThreads) {
-    throw UsageError("--threads", options.threads, "between 1 and 256 threads");
-  }
+  const std::uint64_t threads = parse_eos_threads(options.threads);
   // A signal stops every point's world; the points completed are written.
   const StopOnSignals stop_on_signals;
-  // One World per thread: each takes the next point not yet taken, so a slow dense point does
-  // not hold up the others. Results land in their point's slot, so the order is the input's.
-  std::vector<GasOutcome> outcomes(specs.size());
-  std::vector<std::exception_ptr> failures(specs.size());
-  std::vector<char> completed(specs.size(), 0);
-  // Each point's fraction done, read by the progress bar.
-  std::vector<std::atomic<double>> done(specs.size());
-  std::atomic<std::size_t> next{0};
-  const auto worker = [&] {
-    for (std::size_t i = next++; i < specs.size() && !StopOnSignals::requested(); i = next++) {
-      try {
-        outcomes[i] =
-            run_gas_session(specs[i], [&done, i](double fraction) { done[i].store(fraction); });
-        completed[i] = outcomes[i].interrupted ? 0 : 1;
-      } catch (...) {
-        failures[i] = std::current_exception();
-      }
-      done[i].store(1.0);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::uint64_t t = 0; t < std::min<std::uint64_t>(threads, specs.size()); ++t)
-    pool.emplace_back(worker);
+  GasPointsOutcome run;
   {
     ProgressBar bar(true);
-    std::atomic<bool> finished{false};
-    std::thread watcher([&] {
-      while (!finished.load()) {
-        double sum = 0.0;
-        for (const std::atomic<double>& fraction : done) sum += fraction.load();
-        bar.update(sum / static_cast<double>(specs.size()), "");
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      }
-    });
-    for (std::thread& thread : pool) thread.join();
-    finished.store(true);
-    watcher.join();
+    run = run_gas_points(specs, threads, &StopOnSignals::requested,
+                         [&bar](double fraction) { bar.update(fraction, ""); });
   }
+  std::vector<GasOutcome>& outcomes = run.outcomes;
+  const std::vector<std::exception_ptr>& failures = run.failures;
+  const std::vector<char>& completed = run.completed;
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
   }

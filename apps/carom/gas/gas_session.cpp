@@ -12,12 +12,22 @@
 namespace carom::cli {
 namespace {
 
+// Makes world's runs stop when `stop` says so, telling `progress` (when given) beside it.
+void stop_world_when(World& world, const GasStopAsked& stop,
+                     std::function<void(const RunStatus&)> progress) {
+  world.set_progress_callback([stop, progress = std::move(progress)](const RunStatus& status) {
+    if (progress) progress(status);
+    return stop();
+  });
+}
+
 // The part of a session's progress bar a compressed start takes.
 constexpr double kCompressionShare = 0.2;
 
 // A random dilute start compressed to the spec's packing fraction; the compression's collisions
 // count as the first part of the session's progress (a twentieth of it).
-World compressed_start(const GasSpec& spec, const GasProgress& progress, GasOutcome& outcome) {
+World compressed_start(const GasSpec& spec, const GasProgress& progress, const GasStopAsked& stop,
+                       GasOutcome& outcome) {
   science::PackingSpec packing;
   packing.n = spec.n;
   packing.second_diameter = spec.second_diameter;
@@ -26,7 +36,7 @@ World compressed_start(const GasSpec& spec, const GasProgress& progress, GasOutc
   packing.sized_for_eta = spec.eta;
   packing.seed = spec.seed;
   World world = science::make_packing_world(packing);
-  stop_world_on_signals(world);
+  stop_world_when(world, stop, nullptr);
   science::CompressionSettings settings;
   settings.rate = kCompressStartRate;
   settings.target_eta = spec.eta;
@@ -37,7 +47,7 @@ World compressed_start(const GasSpec& spec, const GasProgress& progress, GasOutc
           progress(kCompressionShare * (p.eta - packing.start_eta) /
                    (spec.eta - packing.start_eta));
         }
-        return StopOnSignals::requested();
+        return stop();
       });
   outcome.compression_collisions = result.collisions;
   outcome.compression_seconds = seconds_since(start);
@@ -54,13 +64,15 @@ World compressed_start(const GasSpec& spec, const GasProgress& progress, GasOutc
 
 }  // namespace
 
-GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
+GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress,
+                           const GasStopAsked& stop_asked) {
+  const GasStopAsked stop = stop_asked ? stop_asked : GasStopAsked(&StopOnSignals::requested);
   GasOutcome outcome;
   const double base = spec.compress_start ? kCompressionShare : 0.0;
   const double rest = 1.0 - base;
   World world;
   if (spec.compress_start) {
-    world = compressed_start(spec, progress, outcome);
+    world = compressed_start(spec, progress, stop, outcome);
     if (outcome.interrupted) return outcome;
   } else {
     world = science::make_hard_disk_world(spec.layout, spec.seed, spec.diameters);
@@ -70,7 +82,7 @@ GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
   const auto equilibration = static_cast<double>(outcome.equilibration_collisions);
   const double measured = spec.collisions_per_disk * static_cast<double>(spec.n);
   const double total = equilibration + measured;
-  stop_world_on_signals(world, [&](const RunStatus& status) {
+  stop_world_when(world, stop, [&](const RunStatus& status) {
     if (progress) progress(base + rest * static_cast<double>(status.contacts) / total);
   });
   outcome.equilibration_rate = science::equilibrate(world, spec.equilibration_collisions);
@@ -83,7 +95,7 @@ GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress) {
       spec.blocks, spec.collisions_per_disk, outcome.equilibration_rate);
   const double duration = 2.0 * spec.collisions_per_disk / outcome.equilibration_rate;
   const double start_time = world.time();
-  stop_world_on_signals(world, [&](const RunStatus& status) {
+  stop_world_when(world, stop, [&](const RunStatus& status) {
     if (progress)
       progress(base +
                rest * (equilibration + measured * (status.time - start_time) / duration) / total);

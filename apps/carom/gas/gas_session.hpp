@@ -27,8 +27,12 @@ struct GasOutcome {
 
 // Told now and then (every few thousand events) how far a session has got, from 0 to 1.
 using GasProgress = std::function<void(double fraction)>;
+// Asked as often whether to stop; the tool's answer is whether a signal came (StopOnSignals).
+using GasStopAsked = std::function<bool()>;
 
-// Runs the session; a signal (StopOnSignals) stops it within a few thousand events.
-[[nodiscard]] GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress = {});
+// Runs the session; it stops within a few thousand events of `stop` answering true (or, without
+// one, of a signal caught by StopOnSignals).
+[[nodiscard]] GasOutcome run_gas_session(const GasSpec& spec, const GasProgress& progress = {},
+                                         const GasStopAsked& stop = {});
 
 }  // namespace carom::cli

@@ -279,7 +279,7 @@ lint: deps
 	# clang-tidy counts the warnings it suppressed in system headers on stderr; only findings matter.
 	# One file per clang-tidy: its cost per file varies tenfold (the CLI11 commands are the dearest),
 	# so handing out single files keeps both cores busy to the end.
-	git ls-files -- 'src/*.cpp' 'apps/*.cpp' | xargs -P 2 -n 1 sh -c '
+	git ls-files -- 'src/*.cpp' 'apps/*.cpp' 'python/src/*.cpp' | xargs -P 2 -n 1 sh -c '
 	  checks="$(LINT_CHECKS)"
 	  if [ -n "$(LINT_CLI11_CHECKS)" ] && grep -q "<CLI/CLI.hpp>" "$$0"; then
 	    checks="$${checks:+$$checks,}$(LINT_CLI11_CHECKS)"

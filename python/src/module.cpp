@@ -17,6 +17,8 @@ PYBIND11_MODULE(_carom, m) {
                                                                 PyExc_ValueError);
   // A scene that cannot be read: a ValueError carrying where and what.
   static py::exception<carom::SceneError> scene_error(m, "SceneError", PyExc_ValueError);
+  // pybind11's translator type takes the exception_ptr by value.
+  // NOLINTNEXTLINE(performance-unnecessary-value-param)
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);

@@ -20,7 +20,7 @@ Boundary packing_boundary(const std::string& name) {
 
 // Compresses with the GIL released; Ctrl-C stops it at the next window, with the world still
 // growing (a compress call on it continues), and is raised once the world is consistent.
-py::dict compress_world(py::object world_object, double rate, double eta, double kT,
+py::dict compress_world(const py::object& world_object, double rate, double eta, double kT,
                         double pressure_limit, std::uint64_t window_collisions,
                         std::uint64_t collision_limit) {
   World& world = unwrap_world(world_object);
@@ -63,7 +63,7 @@ py::dict compress_world(py::object world_object, double rate, double eta, double
   return out;
 }
 
-py::dict contact_network(py::object world_object, std::optional<double> tolerance) {
+py::dict contact_network(const py::object& world_object, std::optional<double> tolerance) {
   const World& world = unwrap_world(world_object);
   const double used = tolerance.value_or(science::kContactTolerance);
   const science::ContactNetwork network = science::find_contact_network(world, used);
@@ -132,13 +132,13 @@ void bind_packing(py::module_& m) {
         "disk's contacts; the rattlers (removed iteratively); Z, the mean contacts of the rest");
   m.def(
       "psi6",
-      [](py::object world, double cutoff) {
+      [](const py::object& world, double cutoff) {
         return science::global_psi6(unwrap_world(world), cutoff);
       },
       py::arg("world"), py::arg("cutoff") = science::kPsi6Cutoff);
   m.def(
       "packing_fraction",
-      [](py::object world) { return science::packing_fraction(unwrap_world(world)); },
+      [](const py::object& world) { return science::packing_fraction(unwrap_world(world)); },
       py::arg("world"));
   m.def("contact_tolerance_at_pressure", &science::contact_tolerance_at_pressure, py::arg("z"));
 }

@@ -50,7 +50,8 @@ struct Frames {
   }
 };
 
-py::array_t<double> array_of(const std::vector<double>& values, std::vector<py::ssize_t> shape) {
+py::array_t<double> array_of(const std::vector<double>& values,
+                             const std::vector<py::ssize_t>& shape) {
   py::array_t<double> out(shape);
   if (!values.empty()) {
     std::copy(values.begin(), values.end(), out.mutable_data());

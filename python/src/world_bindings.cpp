@@ -119,7 +119,7 @@ class PyWorld {
   explicit PyWorld(World world) : world_(std::move(world)) {}
 
   World& world() { return world_; }
-  const World& world() const { return world_; }
+  [[nodiscard]] const World& world() const { return world_; }
 
   void set_stop_condition(const std::optional<py::function>& condition) {
     python_condition_ = condition.has_value();
@@ -127,7 +127,7 @@ class PyWorld {
       world_.set_stop_condition({});
       return;
     }
-    py::function call = *condition;
+    const py::function& call = *condition;
     world_.set_stop_condition([call](const ContactEvent& contact) {
       // Called during a run that holds the GIL.
       return call(contact_dict(contact)).cast<bool>();

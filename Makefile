@@ -24,9 +24,11 @@ RUN_PACKAGES := cmake ninja-build g++ nlohmann-json3-dev libcli11-dev libfmt-dev
 PACKAGES := $(RUN_PACKAGES) clang clang-format clang-tidy libclang-rt-14-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev $(PYTHON_PACKAGES)
 
-# make python: the module (pybind11, NumPy), its tests (pytest) and GSD trajectories (gsd), all
-# from Debian; Debian's python3 imports what is installed under /usr/local/lib/python3.11/dist-packages.
-PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd
+# make python: the module (pybind11, NumPy), its tests (pytest), GSD trajectories (gsd) and the
+# examples' plots (matplotlib), all from Debian; Debian's python3 imports what is installed under
+# /usr/local/lib/python3.11/dist-packages.
+PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd \
+                   python3-matplotlib
 PYTHON_PREFIX := /usr/local
 
 RUN_PICTURE := build/two-moving-balls.svg

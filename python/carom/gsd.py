@@ -69,7 +69,7 @@ def _frames_of_run(run):
 
 
 def _frame_of_world(world):
-    d = getattr(world, "def")
+    d = world.settings
     positions = world.positions
     radii = world.radii
     lower, side = _box_of(d["boundary"], d["lower"], d["upper"], positions, radii)

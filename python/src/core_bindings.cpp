@@ -79,14 +79,17 @@ py::array_t<double> sweep_ball_ball_many(const DoubleArray& a, const DoubleArray
 
 void bind_core(py::module_& m) {
   py::class_<Impact>(m, "Impact", "Where and when two shapes first touch (or that they do not)")
-      .def_readonly("hit", &Impact::hit)
-      .def_readonly("overlapping", &Impact::overlapping)
-      .def_readonly("t", &Impact::t)
-      .def_readonly("a_at", &Impact::a_at)
-      .def_readonly("b_at", &Impact::b_at)
-      .def_readonly("normal", &Impact::normal)
-      .def_readonly("point", &Impact::point)
-      .def("__bool__", [](const Impact& i) { return i.hit; })
+      .def_readonly("hit", &Impact::hit, "Whether they touch within the step (or horizon)")
+      .def_readonly("overlapping", &Impact::overlapping,
+                    "Whether they already overlap at the start (then t = 0)")
+      .def_readonly("t", &Impact::t,
+                    "The time of first contact: a fraction of the step, or a time (time forms)")
+      .def_readonly("a_at", &Impact::a_at, "Where a's centre is at t")
+      .def_readonly("b_at", &Impact::b_at, "Where b's centre is at t (the wall's forms: a_at)")
+      .def_readonly("normal", &Impact::normal, "The unit normal at contact, from a towards b")
+      .def_readonly("point", &Impact::point, "The contact point at t")
+      .def(
+          "__bool__", [](const Impact& i) { return i.hit; }, "hit")
       .def("__repr__", &impact_repr);
 
   // ---- step form ----
@@ -103,7 +106,8 @@ void bind_core(py::module_& m) {
       [](const BallTuple& a, Vec2 move_a, Vec2 point) {
         return sweep_ball_point(ball_of(a), move_a, point);
       },
-      py::arg("a"), py::arg("move_a"), py::arg("point"));
+      py::arg("a"), py::arg("move_a"), py::arg("point"),
+      "Ball a = (x, y, r) moving by move_a against a fixed point (x, y) during a step.");
   m.def(
       "sweep_ball_segment",
       [](const BallTuple& a, Vec2 move_a, const SegmentTuple& segment) {
@@ -146,7 +150,8 @@ void bind_core(py::module_& m) {
                                          horizon);
       },
       py::arg("a"), py::arg("velocity"), py::arg("point"), py::arg("horizon"),
-      py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0);
+      py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0,
+      "The first contact within [0, horizon] of a moving ball and a fixed point.");
   m.def(
       "time_of_impact_ball_segment",
       [](const BallTuple& a, Vec2 velocity, const SegmentTuple& segment, double horizon,
@@ -155,7 +160,9 @@ void bind_core(py::module_& m) {
                                            segment_of(segment), horizon);
       },
       py::arg("a"), py::arg("velocity"), py::arg("segment"), py::arg("horizon"),
-      py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0);
+      py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0,
+      "The first contact within [0, horizon] of a moving ball and a fixed segment (its ends "
+      "included).");
   m.def(
       "time_of_impact_ball_arc",
       [](const BallTuple& a, Vec2 velocity, const ArcTuple& arc, double horizon, Vec2 acceleration,
@@ -164,16 +171,18 @@ void bind_core(py::module_& m) {
                                        arc_of(arc), horizon);
       },
       py::arg("a"), py::arg("velocity"), py::arg("arc"), py::arg("horizon"),
-      py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0);
+      py::arg("acceleration") = Vec2{}, py::arg("growth") = 0.0,
+      "The first contact within [0, horizon] of a moving ball and a fixed arc (either side, its "
+      "ends included).");
 
   // ---- bounces ----
-  py::class_<BounceResult>(m, "BounceResult")
-      .def_readonly("velocity_a", &BounceResult::velocity_a)
-      .def_readonly("velocity_b", &BounceResult::velocity_b)
-      .def_readonly("impulse", &BounceResult::impulse);
-  py::class_<WallBounceResult>(m, "WallBounceResult")
-      .def_readonly("velocity", &WallBounceResult::velocity)
-      .def_readonly("impulse", &WallBounceResult::impulse);
+  py::class_<BounceResult>(m, "BounceResult", "Two balls' velocities after a bounce")
+      .def_readonly("velocity_a", &BounceResult::velocity_a, "a's velocity after")
+      .def_readonly("velocity_b", &BounceResult::velocity_b, "b's velocity after")
+      .def_readonly("impulse", &BounceResult::impulse, "The impulse along the normal (>= 0)");
+  py::class_<WallBounceResult>(m, "WallBounceResult", "A ball's velocity after a wall bounce")
+      .def_readonly("velocity", &WallBounceResult::velocity, "The velocity after")
+      .def_readonly("impulse", &WallBounceResult::impulse, "The impulse along the normal (>= 0)");
   m.def("bounce", &bounce, py::arg("velocity_a"), py::arg("mass_a"), py::arg("velocity_b"),
         py::arg("mass_b"), py::arg("normal"), py::arg("restitution") = 1.0,
         "Two balls touching with normal from a to b: their velocities after the bounce and the "

@@ -135,12 +135,16 @@ void bind_packing(py::module_& m) {
       [](const py::object& world, double cutoff) {
         return science::global_psi6(unwrap_world(world), cutoff);
       },
-      py::arg("world"), py::arg("cutoff") = science::kPsi6Cutoff);
+      py::arg("world"), py::arg("cutoff") = science::kPsi6Cutoff,
+      "The global bond order |sum of psi6_j| / N, neighbours closer than cutoff times the "
+      "sum of the two radii");
   m.def(
       "packing_fraction",
       [](const py::object& world) { return science::packing_fraction(unwrap_world(world)); },
-      py::arg("world"));
-  m.def("contact_tolerance_at_pressure", &science::contact_tolerance_at_pressure, py::arg("z"));
+      py::arg("world"), "Sum of pi r^2 over the balls divided by the cell's (or box's) area");
+  m.def("contact_tolerance_at_pressure", &science::contact_tolerance_at_pressure, py::arg("z"),
+        "The gap, in diameters, below which two disks of a packing at reduced pressure z count "
+        "as touching (1e3 / z, at most 1e-2)");
 }
 
 }  // namespace carom::python

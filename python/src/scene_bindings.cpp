@@ -125,13 +125,16 @@ py::dict run_scene(const Scene& scene, double until, double frame_interval) {
 
 void bind_scene(py::module_& m) {
   py::class_<Scene>(m, "Scene", "A world described as data (docs/scenes.md): read, saved, built")
-      .def_readwrite("description", &Scene::description)
-      .def_readwrite("time", &Scene::time)
+      .def_readwrite("description", &Scene::description, "The scene's description text")
+      .def_readwrite("time", &Scene::time, "The time the scene starts at")
       .def_property_readonly(
           "ball_count", [](const Scene& s) { return expand_balls(s).size(); },
           "Explicit and generated balls, pockets not counted")
-      .def("__len__", [](const Scene& s) { return expand_balls(s).size(); })
-      .def_property_readonly("pocket_count", [](const Scene& s) { return s.pockets.size(); })
+      .def(
+          "__len__", [](const Scene& s) { return expand_balls(s).size(); }, "ball_count")
+      .def_property_readonly(
+          "pocket_count", [](const Scene& s) { return s.pockets.size(); },
+          "Pockets (balls that take away any ball they touch)")
       .def(
           "to_json", [](const Scene& s) { return to_json_text(s); },
           "The scene as JSON text; parse_scene gives it back bit for bit")

@@ -370,7 +370,9 @@ void bind_world(py::module_& m) {
            py::arg("upper") = Vec2{}, py::arg("restitution") = 1.0, py::arg("collapse_time") = 0.0,
            py::arg("cell_size") = 0.0, py::arg("gravity") = Vec2{},
            py::arg("rest_height") = WorldDef{}.rest_height, py::arg("growth_rate") = 0.0)
-      .def_property_readonly("def", [](const PyWorld& w) { return def_dict(w.world().def()); })
+      .def_property_readonly(
+          "settings", [](const PyWorld& w) { return def_dict(w.world().def()); },
+          "The keyword arguments the world was made with (its WorldDef), as a dict")
       // ---- balls ----
       .def(
           "add_ball",
@@ -380,7 +382,8 @@ void bind_world(py::module_& m) {
             return id_number(w.world().add_ball(def));
           },
           py::arg("position"), py::arg("velocity") = Vec2{}, py::arg("radius") = 1.0,
-          py::arg("mass") = 1.0, py::arg("restitution") = py::none(), py::arg("user_data") = 0)
+          py::arg("mass") = 1.0, py::arg("restitution") = py::none(), py::arg("user_data") = 0,
+          "Adds one ball (restitution None: the world's); returns its id")
       .def("add_balls", &add_balls, py::arg("positions"), py::arg("velocities") = py::none(),
            py::arg("radii") = 1.0, py::arg("masses") = 1.0, py::arg("restitution") = py::none(),
            py::arg("user_data") = py::none(),
@@ -388,36 +391,44 @@ void bind_world(py::module_& m) {
            "restitution each a number or (N,); NaN restitution: the world's); returns their ids")
       .def(
           "remove_ball", [](PyWorld& w, std::uint64_t id) { w.world().remove_ball(id_of(id)); },
-          py::arg("id"))
+          py::arg("id"), "Removes a ball; its id becomes stale (InvalidArgument after)")
       .def(
           "contains",
           [](const PyWorld& w, std::uint64_t id) { return w.world().contains(id_of(id)); },
-          py::arg("id"))
-      .def("__len__", [](const PyWorld& w) { return w.world().ball_count(); })
+          py::arg("id"), "Whether the id names a ball still in the world")
+      .def(
+          "__len__", [](const PyWorld& w) { return w.world().ball_count(); }, "The number of balls")
       // ---- walls ----
       .def(
           "add_segment",
           [](PyWorld& w, Vec2 a, Vec2 b) {
             return w.world().add_segment({a, b});
           },
-          py::arg("a"), py::arg("b"))
+          py::arg("a"), py::arg("b"), "Adds a fixed segment from a to b; returns its wall id")
       .def(
           "add_polyline",
           [](PyWorld& w, const std::vector<Vec2>& points, bool closed) {
             return w.world().add_polyline(points, closed);
           },
-          py::arg("points"), py::arg("closed") = false)
+          py::arg("points"), py::arg("closed") = false,
+          "Adds a segment between each pair of successive points (and back to the first when "
+          "closed); returns the first segment's wall id")
       .def(
           "add_arc",
           [](PyWorld& w, Vec2 center, double radius, double start_angle, double end_angle) {
             return w.world().add_arc({center, radius, start_angle, end_angle});
           },
-          py::arg("center"), py::arg("radius"), py::arg("start_angle"), py::arg("end_angle"))
+          py::arg("center"), py::arg("radius"), py::arg("start_angle"), py::arg("end_angle"),
+          "Adds a circular arc, counter-clockwise from start_angle to end_angle (radians); "
+          "returns its wall id")
       .def(
           "add_box",
           [](PyWorld& w, Vec2 lower, Vec2 upper) { return w.world().add_box(lower, upper); },
-          py::arg("lower"), py::arg("upper"))
-      .def_property_readonly("wall_count", [](const PyWorld& w) { return w.world().wall_count(); })
+          py::arg("lower"), py::arg("upper"),
+          "Adds the four segments of a rectangle; returns the first one's wall id")
+      .def_property_readonly(
+          "wall_count", [](const PyWorld& w) { return w.world().wall_count(); },
+          "The number of walls (segments and arcs, the boundary's box included)")
       // ---- advancing time ----
       .def(
           "step", [](PyWorld& w, double dt) { return w.run([&] { return w.world().step(dt); }); },
@@ -425,7 +436,7 @@ void bind_world(py::module_& m) {
       .def(
           "run_until",
           [](PyWorld& w, double time) { return w.run([&] { return w.world().run_until(time); }); },
-          py::arg("time"))
+          py::arg("time"), "Advances to the given time; returns the time reached")
       .def(
           "run_collisions",
           [](PyWorld& w, std::uint64_t count, std::optional<double> time_limit) {
@@ -437,80 +448,100 @@ void bind_world(py::module_& m) {
           py::arg("count"), py::arg("time_limit") = py::none(),
           "Resolves the next `count` contacts (fewer when stopped: see stop_reason)")
       .def_property_readonly(
-          "stop_reason", [](const PyWorld& w) { return stop_reason_name(w.world().stop_reason()); })
+          "stop_reason", [](const PyWorld& w) { return stop_reason_name(w.world().stop_reason()); },
+          "Why the last run ended: \"none\" (it did what it was asked), \"no_more_contacts\", "
+          "\"time_limit\" (run_collisions' limit came first), \"stop_condition\" or "
+          "\"interrupted\" (request_stop or Ctrl-C)")
       .def("set_stop_condition", &PyWorld::set_stop_condition, py::arg("condition"),
            "A callable taking one contact (a dict) and returning True to end the run right after "
            "it; None removes it. Runs with a condition keep the GIL.")
-      .def("request_stop", [](PyWorld& w) { w.world().request_stop(); })
+      .def(
+          "request_stop", [](PyWorld& w) { w.world().request_stop(); },
+          "Ends the current run after the contact being resolved (stop_reason \"interrupted\")")
       .def_property(
           "contact_recording", [](const PyWorld& w) { return w.world().contact_recording(); },
-          [](PyWorld& w, bool on) { w.world().set_contact_recording(on); })
+          [](PyWorld& w, bool on) { w.world().set_contact_recording(on); },
+          "Whether runs keep their contacts for World.contacts (off: no cost)")
       .def_property_readonly(
           "contacts", [](const PyWorld& w) { return contacts_of(w.world()); },
           "The last run's contacts as a structured array (time, kind: 0 "
           "ball-ball 1 ball-wall, a, b, wall, point, normal, approach_speed, "
           "impulse)")
       // ---- state ----
-      .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); })
-      .def_property_readonly("ids",
-                             [](const PyWorld& w) {
-                               const std::vector<BallId> ids = w.world().balls();
-                               py::array_t<std::uint64_t> out(static_cast<py::ssize_t>(ids.size()));
-                               auto view = out.mutable_unchecked<1>();
-                               for (std::size_t i = 0; i < ids.size(); ++i) {
-                                 view(static_cast<py::ssize_t>(i)) = id_number(ids[i]);
-                               }
-                               return out;
-                             })
-      .def_property_readonly("positions",
-                             [](const PyWorld& w) {
-                               return points_of(w.world(),
-                                                [&](BallId id) { return w.world().position(id); });
-                             })
-      .def_property_readonly("velocities",
-                             [](const PyWorld& w) {
-                               return points_of(w.world(),
-                                                [&](BallId id) { return w.world().velocity(id); });
-                             })
-      .def_property_readonly("radii",
-                             [](const PyWorld& w) {
-                               return values_of(w.world(),
-                                                [&](BallId id) { return w.world().radius(id); });
-                             })
-      .def_property_readonly("masses",
-                             [](const PyWorld& w) {
-                               return values_of(w.world(),
-                                                [&](BallId id) { return w.world().mass(id); });
-                             })
+      .def_property_readonly(
+          "time", [](const PyWorld& w) { return w.world().time(); }, "The world's time")
+      .def_property_readonly(
+          "ids",
+          [](const PyWorld& w) {
+            const std::vector<BallId> ids = w.world().balls();
+            py::array_t<std::uint64_t> out(static_cast<py::ssize_t>(ids.size()));
+            auto view = out.mutable_unchecked<1>();
+            for (std::size_t i = 0; i < ids.size(); ++i) {
+              view(static_cast<py::ssize_t>(i)) = id_number(ids[i]);
+            }
+            return out;
+          },
+          "(N,) uint64: every ball's id, in handle order (the order of every array)")
+      .def_property_readonly(
+          "positions",
+          [](const PyWorld& w) {
+            return points_of(w.world(), [&](BallId id) { return w.world().position(id); });
+          },
+          "(N, 2) positions at the world's time, in the order of ids")
+      .def_property_readonly(
+          "velocities",
+          [](const PyWorld& w) {
+            return points_of(w.world(), [&](BallId id) { return w.world().velocity(id); });
+          },
+          "(N, 2) velocities at the world's time, in the order of ids")
+      .def_property_readonly(
+          "radii",
+          [](const PyWorld& w) {
+            return values_of(w.world(), [&](BallId id) { return w.world().radius(id); });
+          },
+          "(N,) radii at the world's time (they change while balls grow)")
+      .def_property_readonly(
+          "masses",
+          [](const PyWorld& w) {
+            return values_of(w.world(), [&](BallId id) { return w.world().mass(id); });
+          },
+          "(N,) masses (inf for an immovable ball)")
       .def(
           "position",
           [](const PyWorld& w, std::uint64_t id) { return w.world().position(id_of(id)); },
-          py::arg("id"))
+          py::arg("id"), "One ball's position at the world's time")
       .def(
           "velocity",
           [](const PyWorld& w, std::uint64_t id) { return w.world().velocity(id_of(id)); },
-          py::arg("id"))
+          py::arg("id"), "One ball's velocity at the world's time")
       .def(
           "radius", [](const PyWorld& w, std::uint64_t id) { return w.world().radius(id_of(id)); },
-          py::arg("id"))
-      .def_property_readonly("kinetic_energy",
-                             [](const PyWorld& w) { return w.world().kinetic_energy(); })
-      .def_property_readonly("potential_energy",
-                             [](const PyWorld& w) { return w.world().potential_energy(); })
-      .def_property_readonly("momentum", [](const PyWorld& w) { return w.world().momentum(); })
-      .def_property_readonly("collision_count",
-                             [](const PyWorld& w) { return w.world().collision_count(); })
+          py::arg("id"), "One ball's radius at the world's time")
+      .def_property_readonly(
+          "kinetic_energy", [](const PyWorld& w) { return w.world().kinetic_energy(); },
+          "Sum of m v^2 / 2 over the movable balls")
+      .def_property_readonly(
+          "potential_energy", [](const PyWorld& w) { return w.world().potential_energy(); },
+          "Sum of -m g.x over the movable balls (0 without gravity)")
+      .def_property_readonly(
+          "momentum", [](const PyWorld& w) { return w.world().momentum(); },
+          "Sum of m v over the movable balls")
+      .def_property_readonly(
+          "collision_count", [](const PyWorld& w) { return w.world().collision_count(); },
+          "Contacts resolved since the world was made")
       // ---- changing the world between steps ----
       .def(
           "set_velocity",
           [](PyWorld& w, std::uint64_t id, Vec2 v) { w.world().set_velocity(id_of(id), v); },
-          py::arg("id"), py::arg("velocity"))
+          py::arg("id"), py::arg("velocity"), "Sets one ball's velocity between steps")
       .def(
           "set_position",
           [](PyWorld& w, std::uint64_t id, Vec2 p, const std::string& placement) {
             return w.world().set_position(id_of(id), p, placement_of(placement));
           },
-          py::arg("id"), py::arg("position"), py::arg("placement") = "refuse")
+          py::arg("id"), py::arg("position"), py::arg("placement") = "refuse",
+          "Moves one ball between steps; placement \"refuse\" (InvalidArgument on overlap) or "
+          "\"nearest_free\"; returns where it was put")
       .def(
           "set_velocities",
           [](PyWorld& w, const DoubleArray& velocities,
@@ -538,14 +569,18 @@ void bind_world(py::module_& m) {
               static_cast<void>(w.world().set_position(balls[i], {p(k, 0), p(k, 1)}, how));
             }
           },
-          py::arg("positions"), py::arg("ids") = py::none(), py::arg("placement") = "refuse")
+          py::arg("positions"), py::arg("ids") = py::none(), py::arg("placement") = "refuse",
+          "Moves every live ball (in the order of ids), or those of the given ids, one after the "
+          "other; placement as in set_position")
       .def(
-          "set_gravity", [](PyWorld& w, Vec2 g) { w.world().set_gravity(g); }, py::arg("gravity"))
+          "set_gravity", [](PyWorld& w, Vec2 g) { w.world().set_gravity(g); }, py::arg("gravity"),
+          "Sets the gravity (an acceleration vector) from now on")
       .def(
           "set_growth_rate", [](PyWorld& w, double rate) { w.world().set_growth_rate(rate); },
-          py::arg("rate"))
-      .def_property_readonly("growth_rate_from_now",
-                             [](const PyWorld& w) { return w.world().growth_rate_from_now(); })
+          py::arg("rate"), "Sets every ball's radius growth rate (length per time) from now on")
+      .def_property_readonly(
+          "growth_rate_from_now", [](const PyWorld& w) { return w.world().growth_rate_from_now(); },
+          "The growth rate set for the time from now on")
       .def(
           "set_temperature", [](PyWorld& w, double kT) { return w.world().set_temperature(kT); },
           py::arg("kT"), "A thermostat's step; returns the work done")

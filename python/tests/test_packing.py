@@ -15,7 +15,7 @@ def test_compression_reaches_the_target_without_overlap():
     assert result["end"] == "target" and not result["jammed"]
     assert result["eta"] == pytest.approx(0.7, abs=1e-12)
     assert world.audit() is None
-    assert getattr(world, "def")["growth_rate"] == 0.0
+    assert world.settings["growth_rate"] == 0.0
 
 
 def test_bidisperse_disks_jam_near_isostatic_and_agree_with_the_network():

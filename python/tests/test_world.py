@@ -30,7 +30,7 @@ def test_arrays_in_and_out():
     assert world.velocities.shape == (100, 2)
     assert (world.radii == 0.5).all() and (world.masses == 1.0).all()
     assert len(world) == 100
-    assert getattr(world, "def")["boundary"] == "periodic"
+    assert world.settings["boundary"] == "periodic"
     world.set_velocities(np.zeros((100, 2)))
     assert world.kinetic_energy == 0.0
     world.set_positions(world.positions + 0.25)

@@ -14,10 +14,10 @@
 namespace carom::cli {
 
 struct GasPointsOutcome {
-  std::vector<GasOutcome> outcomes;           // in the specs' order
-  std::vector<std::exception_ptr> failures;   // a point's error (null where it ran)
-  std::vector<char> completed;                // 1 where a point ran to its end, uninterrupted
-  bool stopped = false;                       // whether `stop` answered true
+  std::vector<GasOutcome> outcomes;          // in the specs' order
+  std::vector<std::exception_ptr> failures;  // a point's error (null where it ran)
+  std::vector<char> completed;               // 1 where a point ran to its end, uninterrupted
+  bool stopped = false;                      // whether `stop` answered true
 };
 
 // Told on the calling thread, about ten times a second while the points run, how far they have

@@ -103,7 +103,7 @@ def signatures_and_doc(routine):
 def docstring(text, indent):
     if not text:
         return ""
-    text = text.replace("\\", "\\\\").replace('"""', '\\"\\"\\"')
+    text = text.replace("\\", "\\\\").replace('"', '\\"')
     return f'{indent}"""{text}"""\n'
 
 

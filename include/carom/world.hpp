@@ -26,23 +26,12 @@
 #include <vector>
 
 #include "carom/bounce.hpp"
+#include "carom/handles.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
+#include "carom/world_query.hpp"
 
 namespace carom {
-
-// A handle to a ball: a slot index and the slot's generation. A removed ball's handle goes stale
-// (its slot's generation moves on) and every use of it throws. The default handle is null.
-struct BallId {
-  std::uint32_t index = 0;
-  std::uint32_t generation = 0;  // 0 only in the null handle
-
-  [[nodiscard]] constexpr bool is_null() const noexcept { return generation == 0; }
-  friend constexpr bool operator==(BallId, BallId) noexcept = default;
-};
-
-// Static geometry is never removed; a wall is named by the order it was added in (from 0).
-using WallId = std::uint32_t;
 
 enum class Boundary : std::uint8_t {
   open,      // no boundary: balls may travel anywhere
@@ -309,6 +298,37 @@ class World {
   // old save or all of the new one, never half. A failure throws InvalidArgument naming `path`.
   void save(const std::filesystem::path& path) const;
   [[nodiscard]] static World load(const std::filesystem::path& path);
+
+  // ---- queries (carom/world_query.hpp; docs/queries.md) ----
+  // The world as it stands at time(): each query visits only the grid's cells near what it asks
+  // about, so its cost grows with those cells and what is in them, not with the world's size.
+  // Touching counts as meeting; results are exact to the rounding of the closed forms the
+  // contacts use. Arguments must be finite (radius > 0 for a cast ball, >= 0 for a circle);
+  // InvalidArgument otherwise.
+  //
+  // The first ball or wall the segment from origin to origin + translation meets. A ray that
+  // starts inside a ball does not see that ball; walls are met from either side.
+  [[nodiscard]] QueryHit cast_ray(Vec2 origin, Vec2 translation,
+                                  const QueryFilter& filter = {}) const;
+  // Every ball and wall it meets, by fraction (ties: balls before walls, then by slot and wall
+  // id), each once (at its first meeting).
+  [[nodiscard]] std::vector<QueryHit> cast_ray_all(Vec2 origin, Vec2 translation,
+                                                   const QueryFilter& filter = {}) const;
+  // A ball of `radius` at `center` moved by `translation` while the world stands still: the
+  // first ball or wall it touches while approaching, as sweep_ball_ball answers for one pair
+  // (overlapping what it starts in: fraction 0, `overlapping`). In a periodic world the radius
+  // and the largest ball's must together stay below a sixth of the cell's shorter side.
+  [[nodiscard]] QueryHit cast_ball(Vec2 center, double radius, Vec2 translation,
+                                   const QueryFilter& filter = {}) const;
+  // The balls that hold the point (on their edge included), in slot order.
+  [[nodiscard]] std::vector<BallId> balls_at_point(Vec2 point,
+                                                   const QueryFilter& filter = {}) const;
+  // The balls that touch or overlap the circle, in slot order.
+  [[nodiscard]] std::vector<BallId> balls_in_circle(Vec2 center, double radius,
+                                                    const QueryFilter& filter = {}) const;
+  // The balls that touch or overlap the axis-aligned box [lower, upper], in slot order.
+  [[nodiscard]] std::vector<BallId> balls_in_box(Vec2 lower, Vec2 upper,
+                                                 const QueryFilter& filter = {}) const;
 
   // ---- checking ----
   // Check of the invariants (no two balls or a ball and a wall overlapping by more than

@@ -20,9 +20,11 @@ void bind_world(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_science(py::module_& m);
 void bind_packing(py::module_& m);
+void bind_queries(py::module_& m);
 
-// A ball's id as Python holds it: one integer, generation above index.
+// A ball's id as Python holds it: one integer, generation above index; and back.
 std::uint64_t id_number(BallId id);
+BallId ball_id(std::uint64_t number);
 // Contacts as the structured array World.contacts gives.
 py::array contacts_array(std::span<const ContactEvent> contacts);
 // A World handed to Python as a carom.World.

@@ -336,6 +336,8 @@ py::array contacts_array(std::span<const ContactEvent> contacts) {
   return out;
 }
 
+BallId ball_id(std::uint64_t number) { return id_of(number); }
+
 py::object wrap_world(World&& world) { return py::cast(PyWorld(std::move(world))); }
 
 World& unwrap_world(py::handle world) { return world.cast<PyWorld&>().world(); }

@@ -1,6 +1,7 @@
 #include "wall.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "carom/geometry.hpp"
 #include "core/accelerated_sweep.hpp"
@@ -43,6 +44,75 @@ Impact time_of_impact(const Wall& wall, const Ball& ball, const Motion& motion, 
   }
   return wall.is_arc ? accelerated_ball_arc(ball, motion, wall.frame, horizon)
                      : accelerated_ball_segment(ball, motion, wall.segment, horizon);
+}
+
+namespace {
+
+// The ray's unit direction, reversed: the normal of a wall met head-on.
+Vec2 facing(Vec2 d) { return d == Vec2{} ? Vec2{} : normalized(-d); }
+
+RayCrossing ray_crossing_segment(const Segment& segment, Vec2 o, Vec2 d) {
+  const Vec2 e = segment.b - segment.a;
+  const Vec2 ao = segment.a - o;
+  const double denominator = cross(d, e);
+  if (denominator != 0.0) {
+    // o + s·d = a + u·e, both in [0, 1].
+    const double s = cross(ao, e) / denominator;
+    const double u = cross(ao, d) / denominator;
+    if (!(s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0)) return {};
+    Vec2 normal = normalized(left_normal(e));
+    if (dot(normal, d) > 0.0) normal = -normal;
+    return {true, s, segment.a + e * u, normal};
+  }
+  // Parallel, or a segment that is a point, or a ray that does not move: only on one line can
+  // they meet, where the ray enters the segment's extent along it.
+  if (cross(ao, d) != 0.0 || cross(ao, e) != 0.0) return {};
+  const double dd = dot(d, d);
+  if (dd == 0.0) {
+    const bool on = dot(o - segment.a, e) >= 0.0 && dot(o - segment.b, e) <= 0.0;
+    return on && carom::nearest_point(segment, o) == o ? RayCrossing{true, 0.0, o, Vec2{}}
+                                                       : RayCrossing{};
+  }
+  const double sa = dot(segment.a - o, d) / dd;
+  const double sb = dot(segment.b - o, d) / dd;
+  if (std::min(sa, sb) <= 0.0 && std::max(sa, sb) >= 0.0) return {true, 0.0, o, facing(d)};
+  const double s = std::min(sa, sb);
+  if (!(s > 0.0 && s <= 1.0)) return {};
+  return {true, s, sa < sb ? segment.a : segment.b, facing(d)};
+}
+
+RayCrossing ray_crossing_arc(const ArcFrame& arc, Vec2 o, Vec2 d) {
+  // |o + s·d − c|² = R²: A·s² + 2·B·s + C = 0, solved with the cancellation-free pair of roots.
+  const Vec2 f = o - arc.center;
+  const double a = dot(d, d);
+  const double b = dot(f, d);
+  const double c = dot(f, f) - arc.radius * arc.radius;
+  const auto meets_at = [&](double s) -> RayCrossing {
+    if (!(s >= 0.0 && s <= 1.0)) return {};
+    const Vec2 point = o + d * s;
+    const Vec2 out = point - arc.center;
+    const double distance = length(out);
+    if (!(distance > 0.0) || !arc.contains(out / distance)) return {};
+    Vec2 normal = out / distance;
+    if (dot(normal, d) > 0.0) normal = -normal;
+    return {true, s, point, normal};
+  };
+  if (a == 0.0) return c == 0.0 ? meets_at(0.0) : RayCrossing{};
+  const double discriminant = b * b - a * c;
+  if (discriminant < 0.0) return {};
+  const double q = -(b + std::copysign(std::sqrt(discriminant), b));
+  double first = q / a;
+  double second = q != 0.0 ? c / q : first;
+  if (second < first) std::swap(first, second);
+  const RayCrossing near = meets_at(first);
+  return near.hit ? near : meets_at(second);
+}
+
+}  // namespace
+
+RayCrossing ray_crossing(const Wall& wall, Vec2 o, Vec2 d) {
+  return wall.is_arc ? ray_crossing_arc(wall.frame, o, d)
+                     : ray_crossing_segment(wall.segment, o, d);
 }
 
 void bounds(const Wall& wall, Vec2& lower, Vec2& upper) {

@@ -34,6 +34,17 @@ struct Wall {
 [[nodiscard]] Impact time_of_impact(const Wall& wall, const Ball& ball, const Motion& motion,
                                     double horizon);
 
+// Where the segment from o to o + d first meets the wall (either side, its ends included): the
+// fraction s in [0, 1], the point, and the wall's unit normal there turned to face the ray (a
+// ray along a segment's line meets it head-on: the normal is −d's direction).
+struct RayCrossing {
+  bool hit = false;
+  double s = 0.0;
+  Vec2 point;
+  Vec2 normal;
+};
+[[nodiscard]] RayCrossing ray_crossing(const Wall& wall, Vec2 o, Vec2 d);
+
 // An axis-aligned box holding the whole wall.
 void bounds(const Wall& wall, Vec2& lower, Vec2& upper);
 

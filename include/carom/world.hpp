@@ -310,23 +310,22 @@ class World {
   // starts inside a ball does not see that ball; walls are met from either side.
   [[nodiscard]] QueryHit cast_ray(Vec2 origin, Vec2 translation,
                                   const QueryFilter& filter = {}) const;
-  // Every ball and wall it meets, by fraction (ties: balls before walls, then by slot and wall
-  // id), each once (at its first meeting).
+  // Every ball and wall it meets, by fraction (ties: balls before walls, then by handle and wall
+  // id), each once (at its first meeting: a long ray in a periodic world meets a ball's copies).
   [[nodiscard]] std::vector<QueryHit> cast_ray_all(Vec2 origin, Vec2 translation,
                                                    const QueryFilter& filter = {}) const;
   // A ball of `radius` at `center` moved by `translation` while the world stands still: the
   // first ball or wall it touches while approaching, as sweep_ball_ball answers for one pair
-  // (overlapping what it starts in: fraction 0, `overlapping`). In a periodic world the radius
-  // and the largest ball's must together stay below a sixth of the cell's shorter side.
+  // (overlapping what it starts in: fraction 0, `overlapping`; whether approaching or not).
   [[nodiscard]] QueryHit cast_ball(Vec2 center, double radius, Vec2 translation,
                                    const QueryFilter& filter = {}) const;
-  // The balls that hold the point (on their edge included), in slot order.
+  // The balls that hold the point (on their edge included), in handle order (that of balls()).
   [[nodiscard]] std::vector<BallId> balls_at_point(Vec2 point,
                                                    const QueryFilter& filter = {}) const;
-  // The balls that touch or overlap the circle, in slot order.
+  // The balls that touch or overlap the circle, in handle order.
   [[nodiscard]] std::vector<BallId> balls_in_circle(Vec2 center, double radius,
                                                     const QueryFilter& filter = {}) const;
-  // The balls that touch or overlap the axis-aligned box [lower, upper], in slot order.
+  // The balls that touch or overlap the axis-aligned box [lower, upper], in handle order.
   [[nodiscard]] std::vector<BallId> balls_in_box(Vec2 lower, Vec2 upper,
                                                  const QueryFilter& filter = {}) const;
 

@@ -12,7 +12,6 @@
 
 namespace carom {
 
-
 // Which balls and walls a query sees. The default sees everything.
 struct QueryFilter {
   bool balls = true;  // false: the query sees no ball
@@ -28,8 +27,8 @@ enum class HitKind : std::uint8_t { none, ball, wall };
 // The first thing a ray or a cast ball meets.
 struct QueryHit {
   HitKind kind = HitKind::none;
-  BallId ball;     // kind == ball
-  WallId wall = 0; // kind == wall
+  BallId ball;      // kind == ball
+  WallId wall = 0;  // kind == wall
   // Where along the translation it meets it, in [0, 1] (the point or centre then is
   // start + fraction · translation); 1 when nothing is met.
   double fraction = 1.0;

@@ -37,14 +37,13 @@ auto answer(const QueryFilter& filter, Query query) {
   return query();
 }
 
-py::object hit_or_none(const QueryHit& hit) {
-  return hit ? py::cast(hit) : py::none();
-}
+py::object hit_or_none(const QueryHit& hit) { return hit ? py::cast(hit) : py::none(); }
 
 py::array_t<std::uint64_t> id_array(const std::vector<BallId>& ids) {
   py::array_t<std::uint64_t> out(static_cast<py::ssize_t>(ids.size()));
   auto view = out.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < ids.size(); ++i) view(static_cast<py::ssize_t>(i)) = id_number(ids[i]);
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    view(static_cast<py::ssize_t>(i)) = id_number(ids[i]);
   return out;
 }
 
@@ -98,8 +97,8 @@ py::array cast_rays(const py::object& self, const DoubleArray& origins,
   const QueryFilter filter = filter_of(balls, walls, ignore, accept);
   answer(filter, [&] {
     for (py::ssize_t i = 0; i < n; ++i) {
-      const Vec2 d = one_translation ? Vec2{moves[0], moves[1]}
-                                     : Vec2{moves[2 * i], moves[2 * i + 1]};
+      const Vec2 d =
+          one_translation ? Vec2{moves[0], moves[1]} : Vec2{moves[2 * i], moves[2 * i + 1]};
       const QueryHit hit = world.cast_ray(row(from, i), d, filter);
       RayRecord r{};
       r.kind = hit.kind == HitKind::ball ? 1 : hit.kind == HitKind::wall ? 2 : 0;
@@ -167,9 +166,9 @@ void bind_queries(py::module_& m) {
             return hit_or_none(
                 answer(filter, [&] { return world.cast_ray(origin, translation, filter); }));
           },
-          py::is_method(world_type), py::name("cast_ray"), py::arg("origin"), py::arg("translation"), py::kw_only(),
-          py::arg("balls") = true, py::arg("walls") = true, py::arg("ignore") = py::none(),
-          py::arg("accept") = py::none(),
+          py::is_method(world_type), py::name("cast_ray"), py::arg("origin"),
+          py::arg("translation"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
+          py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
           "The first ball or wall the segment from origin to origin + translation meets, or "
           "None (a ray starting inside a ball does not see it; walls are met from either side). "
           "Filter: balls/walls False hides them, ignore an id, accept(id) -> bool"));
@@ -182,15 +181,15 @@ void bind_queries(py::module_& m) {
             const QueryFilter filter = filter_of(balls, walls, ignore, accept);
             return answer(filter, [&] { return world.cast_ray_all(origin, translation, filter); });
           },
-          py::is_method(world_type), py::name("cast_ray_all"), py::arg("origin"), py::arg("translation"), py::kw_only(),
-          py::arg("balls") = true, py::arg("walls") = true, py::arg("ignore") = py::none(),
-          py::arg("accept") = py::none(),
+          py::is_method(world_type), py::name("cast_ray_all"), py::arg("origin"),
+          py::arg("translation"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
+          py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
           "Every ball and wall the segment meets, by fraction, each once (a list of QueryHit)"));
   add("cast_rays",
-      py::cpp_function(&cast_rays, py::is_method(world_type), py::name("cast_rays"), py::arg("origins"),
-                       py::arg("translations"), py::kw_only(), py::arg("balls") = true,
-                       py::arg("walls") = true, py::arg("ignore") = py::none(),
-                       py::arg("accept") = py::none(),
+      py::cpp_function(&cast_rays, py::is_method(world_type), py::name("cast_rays"),
+                       py::arg("origins"), py::arg("translations"), py::kw_only(),
+                       py::arg("balls") = true, py::arg("walls") = true,
+                       py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
                        "cast_ray for N rays at once (origins (N, 2); translations (N, 2) or one "
                        "(2,)): a structured array of first hits (kind: 0 nothing, 1 ball, 2 "
                        "wall; ball, wall, fraction, point, normal), the GIL released"));
@@ -204,22 +203,23 @@ void bind_queries(py::module_& m) {
             return hit_or_none(answer(
                 filter, [&] { return world.cast_ball(center, radius, translation, filter); }));
           },
-          py::is_method(world_type), py::name("cast_ball"), py::arg("center"), py::arg("radius"), py::arg("translation"),
-          py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
+          py::is_method(world_type), py::name("cast_ball"), py::arg("center"), py::arg("radius"),
+          py::arg("translation"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
           py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
           "A ball of radius at center moved by translation while the world stands still: the "
           "first ball or wall it touches, approaching, or None (started overlapping: fraction 0, "
           "overlapping). The pool aim line: ignore the cue ball"));
   add("balls_at_point",
       py::cpp_function(
-          [](const py::object& self, Vec2 point, bool balls, const std::optional<std::uint64_t>& ignore,
+          [](const py::object& self, Vec2 point, bool balls,
+             const std::optional<std::uint64_t>& ignore,
              const std::optional<std::function<bool(std::uint64_t)>>& accept) {
             const World& world = unwrap_world(self);
             const QueryFilter filter = filter_of(balls, false, ignore, accept);
             return id_array(answer(filter, [&] { return world.balls_at_point(point, filter); }));
           },
-          py::is_method(world_type), py::name("balls_at_point"), py::arg("point"), py::kw_only(), py::arg("balls") = true,
-          py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::is_method(world_type), py::name("balls_at_point"), py::arg("point"), py::kw_only(),
+          py::arg("balls") = true, py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
           "The ids of the balls holding the point (edge included), in the order of ids"));
   add("balls_in_circle",
       py::cpp_function(
@@ -231,8 +231,9 @@ void bind_queries(py::module_& m) {
             return id_array(
                 answer(filter, [&] { return world.balls_in_circle(center, radius, filter); }));
           },
-          py::is_method(world_type), py::name("balls_in_circle"), py::arg("center"), py::arg("radius"), py::kw_only(),
-          py::arg("balls") = true, py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::is_method(world_type), py::name("balls_in_circle"), py::arg("center"),
+          py::arg("radius"), py::kw_only(), py::arg("balls") = true, py::arg("ignore") = py::none(),
+          py::arg("accept") = py::none(),
           "The ids of the balls touching or overlapping the circle, in the order of ids"));
   add("balls_in_box",
       py::cpp_function(
@@ -241,10 +242,12 @@ void bind_queries(py::module_& m) {
              const std::optional<std::function<bool(std::uint64_t)>>& accept) {
             const World& world = unwrap_world(self);
             const QueryFilter filter = filter_of(balls, false, ignore, accept);
-            return id_array(answer(filter, [&] { return world.balls_in_box(lower, upper, filter); }));
+            return id_array(
+                answer(filter, [&] { return world.balls_in_box(lower, upper, filter); }));
           },
-          py::is_method(world_type), py::name("balls_in_box"), py::arg("lower"), py::arg("upper"), py::kw_only(),
-          py::arg("balls") = true, py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::is_method(world_type), py::name("balls_in_box"), py::arg("lower"), py::arg("upper"),
+          py::kw_only(), py::arg("balls") = true, py::arg("ignore") = py::none(),
+          py::arg("accept") = py::none(),
           "The ids of the balls touching or overlapping the box [lower, upper], in the order of "
           "ids"));
 }

@@ -60,7 +60,8 @@ class QueryWalk {
       const auto count = static_cast<std::int64_t>(std::max(pieces, 1.0));
       for (std::int64_t k = 0; k < count; ++k) {
         const double s0 = static_cast<double>(k) / static_cast<double>(count);
-        const double s1 = k + 1 == count ? 1.0 : static_cast<double>(k + 1) / static_cast<double>(count);
+        const double s1 =
+            k + 1 == count ? 1.0 : static_cast<double>(k + 1) / static_cast<double>(count);
         piece(a + d * s0, a + d * s1, visit);
         if (done(s1)) return;
       }
@@ -281,8 +282,7 @@ struct FirstHit {
 
 // A ray against ball `slot` at p: where o + s·d enters it (a ray starting inside sees nothing).
 template <typename State>
-std::optional<QueryHit> ray_meets_ball(const State& w, std::uint32_t slot, Vec2 p, Vec2 o,
-                                       Vec2 d) {
+std::optional<QueryHit> ray_meets_ball(const State& w, std::uint32_t slot, Vec2 p, Vec2 o, Vec2 d) {
   const double r = w.radius_at(slot, w.time);
   // The ball moving by −d against the fixed point o: the same contact, from the ball's side.
   const Impact impact = sweep_ball_point({p, r}, -d, o);
@@ -314,9 +314,8 @@ std::optional<QueryHit> ray_meets_wall(const State& w, WallId id, Vec2 o, Vec2 d
 // Sorted by handle, each once (a periodic world may find a ball at two copies).
 template <typename State>
 std::vector<BallId> in_handle_order(const State& w, std::vector<std::uint32_t>& slots) {
-  std::sort(slots.begin(), slots.end(), [&w](std::uint32_t a, std::uint32_t b) {
-    return w.id_of(a).index < w.id_of(b).index;
-  });
+  std::sort(slots.begin(), slots.end(),
+            [&w](std::uint32_t a, std::uint32_t b) { return w.id_of(a).index < w.id_of(b).index; });
   slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
   std::vector<BallId> ids;
   ids.reserve(slots.size());
@@ -442,8 +441,9 @@ QueryHit World::cast_ball(Vec2 center, double radius, Vec2 translation,
         const Vec2 on_wall = detail::nearest_point(wall, at);
         const Vec2 gap = on_wall - at;
         hit.point = on_wall;
-        hit.center =
-            impact.overlapping ? center : on_wall - (gap == Vec2{} ? impact.normal : normalized(gap)) * radius;
+        hit.center = impact.overlapping
+                         ? center
+                         : on_wall - (gap == Vec2{} ? impact.normal : normalized(gap)) * radius;
         first.offer(hit);
       },
       [&](double s) { return first.final_up_to(s); });

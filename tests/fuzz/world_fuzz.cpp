@@ -10,7 +10,9 @@
 // - elastic worlds keep their energy (kinetic, plus potential under gravity) and inelastic ones
 //   never gain any (to rounding);
 // - a loaded world saves to the same bytes and, given the next call, agrees bit for bit with
-//   the world it was saved from.
+//   the world it was saved from;
+// - the queries (a ray's every hit, a ball cast, a circle and a box from each of a few balls)
+//   find what a scan of every ball and wall finds.
 //
 // Input bytes, read front to back (missing bytes read as 0, so every input is valid):
 //   byte 0: boundary (open, box, periodic), the world's restitution and gravity (none, or, in an
@@ -33,10 +35,13 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "carom/bounce.hpp"
 #include "carom/error.hpp"
+#include "carom/sweep.hpp"
 #include "carom/world.hpp"
 
 namespace {
@@ -658,6 +663,108 @@ class Harness {
       check(energy <= energy_ + allowed, "an inelastic world gained energy");
     }
     energy_ = energy;
+    check_queries();
+  }
+
+  // The queries against a scan of every ball (at each periodic copy in reach) and wall, from
+  // places the world itself gives (no input is read, so the inputs' meaning is unchanged): from
+  // each ball's centre a ray and a cast ball across the world, a circle and a box around it.
+  void check_queries() {
+    const World& w = world();
+    const std::vector<BallId> ids = w.balls();
+    const bool periodic = def_.boundary == Boundary::periodic;
+    // Every place ball `id` may be met at within `reach` of the box [lo, hi].
+    const auto copies = [&](BallId id, Vec2 lo, Vec2 hi, double reach) {
+      std::vector<Vec2> out;
+      const Vec2 p = w.position(id);
+      if (!periodic) return std::vector<Vec2>{p};
+      const double r = reach + w.radius(id);
+      for (double kx = std::ceil((lo.x - r - p.x) / kSide);
+           kx <= std::floor((hi.x + r - p.x) / kSide); ++kx) {
+        for (double ky = std::ceil((lo.y - r - p.y) / kSide);
+             ky <= std::floor((hi.y + r - p.y) / kSide); ++ky) {
+          out.push_back(p + Vec2{kx * kSide, ky * kSide});
+        }
+      }
+      return out;
+    };
+    std::size_t k = 0;
+    for (const BallId from : ids) {
+      if (++k > 4) break;
+      const Vec2 c = w.position(from);
+      const double angle = 2.0 * std::numbers::pi * static_cast<double>(k) / 7.0 + 0.3;
+      const Vec2 d = Vec2{std::cos(angle), std::sin(angle)} * (1.5 * kSide);
+      const Vec2 lo{std::min(c.x, c.x + d.x), std::min(c.y, c.y + d.y)};
+      const Vec2 hi{std::max(c.x, c.x + d.x), std::max(c.y, c.y + d.y)};
+      // The ray, balls only (every hit, in order), against sweep_ball_point of each copy.
+      carom::QueryFilter balls_only;
+      balls_only.walls = false;
+      std::vector<std::pair<double, std::uint32_t>> expected;
+      for (const BallId id : ids) {
+        double first = std::numeric_limits<double>::infinity();
+        for (const Vec2 p : copies(id, lo, hi, 0.0)) {
+          const carom::Impact hit = carom::sweep_ball_point({p, w.radius(id)}, -d, c);
+          if (hit.hit && !hit.overlapping) first = std::min(first, hit.t);
+        }
+        if (first <= 1.0) expected.emplace_back(first, id.index);
+      }
+      std::sort(expected.begin(), expected.end());
+      const std::vector<carom::QueryHit> hits = w.cast_ray_all(c, d, balls_only);
+      check(hits.size() == expected.size(), "cast_ray_all found another number of balls");
+      for (std::size_t h = 0; h < hits.size(); ++h) {
+        check(hits[h].fraction == expected[h].first && hits[h].ball.index == expected[h].second,
+              "cast_ray_all differs from the scan");
+      }
+      // A ball cast of half the ball's radius, everything seen but the ball itself.
+      const double radius = 0.5 * w.radius(from);
+      double best = std::numeric_limits<double>::infinity();
+      for (const BallId id : ids) {
+        if (id == from) continue;
+        for (const Vec2 p : copies(id, lo, hi, radius)) {
+          const carom::Impact hit = carom::sweep_ball_ball({c, radius}, d, {p, w.radius(id)});
+          if (hit.hit || hit.overlapping) best = std::min(best, hit.overlapping ? 0.0 : hit.t);
+        }
+      }
+      for (carom::WallId wall = 0; wall < w.wall_count(); ++wall) {
+        const auto shape = w.wall(wall);
+        const carom::Impact hit =
+            std::holds_alternative<carom::Segment>(shape)
+                ? carom::sweep_ball_segment({c, radius}, d, std::get<carom::Segment>(shape))
+                : carom::sweep_ball_arc({c, radius}, d, std::get<carom::Arc>(shape));
+        if (hit.hit || hit.overlapping) best = std::min(best, hit.overlapping ? 0.0 : hit.t);
+      }
+      carom::QueryFilter not_itself;
+      not_itself.ignore = from;
+      const carom::QueryHit cast = w.cast_ball(c, radius, d, not_itself);
+      check(cast ? cast.fraction == best : !(best <= 1.0), "cast_ball differs from the scan");
+      // The balls within a circle of the ball's diameter around it, and in a box of that size.
+      const double around = 2.0 * w.radius(from);
+      std::vector<std::uint32_t> in_circle;
+      std::vector<std::uint32_t> in_box;
+      const Vec2 box_lo = c - Vec2{around, around};
+      const Vec2 box_hi = c + Vec2{around, around};
+      for (const BallId id : ids) {
+        for (const Vec2 p : copies(id, box_lo, box_hi, 0.0)) {
+          const double reach = around + w.radius(id);
+          if (carom::length_squared(p - c) <= reach * reach) in_circle.push_back(id.index);
+          const Vec2 nearest{std::clamp(p.x, box_lo.x, box_hi.x),
+                             std::clamp(p.y, box_lo.y, box_hi.y)};
+          if (carom::length_squared(nearest - p) <= w.radius(id) * w.radius(id))
+            in_box.push_back(id.index);
+        }
+      }
+      const auto indices = [](std::vector<BallId> found) {
+        std::vector<std::uint32_t> out;
+        for (const BallId id : found) out.push_back(id.index);
+        return out;
+      };
+      for (auto* list : {&in_circle, &in_box}) {
+        std::sort(list->begin(), list->end());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+      }
+      check(indices(w.balls_in_circle(c, around)) == in_circle, "balls_in_circle differs");
+      check(indices(w.balls_in_box(box_lo, box_hi)) == in_box, "balls_in_box differs");
+    }
   }
 
   Bytes& in_;

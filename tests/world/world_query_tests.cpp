@@ -101,7 +101,8 @@ BallDef ball_at(Vec2 position, double radius) {
 
 detail::Wall wall_of(const World& world, WallId id) {
   const auto shape = world.wall(id);
-  if (const auto* segment = std::get_if<Segment>(&shape)) return detail::make_segment_wall(*segment);
+  if (const auto* segment = std::get_if<Segment>(&shape))
+    return detail::make_segment_wall(*segment);
   return detail::make_arc_wall("test", std::get<Arc>(shape));
 }
 
@@ -234,10 +235,12 @@ Segment2 random_path(std::mt19937_64& engine) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double angle = 2.0 * std::numbers::pi * unit(engine);
   const double pick = unit(engine);
-  const double length = pick < 0.6 ? 10.0 * unit(engine) : pick < 0.95 ? 80.0 * unit(engine)
-                                                                        : 400.0 * unit(engine);
+  const double length = pick < 0.6    ? 10.0 * unit(engine)
+                        : pick < 0.95 ? 80.0 * unit(engine)
+                                      : 400.0 * unit(engine);
   const double spread = pick > 0.9 ? 4.0 : 1.2;
-  return {{kSide * (0.5 + spread * (unit(engine) - 0.5)), kSide * (0.5 + spread * (unit(engine) - 0.5))},
+  return {{kSide * (0.5 + spread * (unit(engine) - 0.5)),
+           kSide * (0.5 + spread * (unit(engine) - 0.5))},
           {length * std::cos(angle), length * std::sin(angle)}};
 }
 
@@ -284,7 +287,8 @@ TEST(WorldQuery, BallCastsFindWhatTheScanFindsAndTouchThere) {
       std::uniform_real_distribution<double> unit(0.0, 1.0);
       for (int q = 0; q < kQueriesPerWorld; ++q) {
         const auto [c, d] = random_path(engine);
-        const double radius = unit(engine) < 0.9 ? 0.1 + 1.5 * unit(engine) : 3.0 + 5.0 * unit(engine);
+        const double radius =
+            unit(engine) < 0.9 ? 0.1 + 1.5 * unit(engine) : 3.0 + 5.0 * unit(engine);
         const QueryHit expected = ball_cast_reference(world, c, radius, d);
         const QueryHit hit = world.cast_ball(c, radius, d);
         SCOPED_TRACE(kind_name(kind) + " world " + std::to_string(w) + " query " +
@@ -297,7 +301,8 @@ TEST(WorldQuery, BallCastsFindWhatTheScanFindsAndTouchThere) {
         if (hit.overlapping) continue;
         // Touching: the centre at contact is the radius (and the ball's) from the contact point.
         ASSERT_NEAR(length(hit.center - hit.point), radius, 1e-9 * (1.0 + radius));
-        ASSERT_LE(length(hit.center - (c + d * hit.fraction)), 1e-9 * (1.0 + length(c) + length(d)));
+        ASSERT_LE(length(hit.center - (c + d * hit.fraction)),
+                  1e-9 * (1.0 + length(c) + length(d)));
       }
     }
   }

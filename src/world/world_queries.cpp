@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "carom/error.hpp"
 #include "carom/sweep.hpp"
 #include "core/validate.hpp"
 #include "wall.hpp"
@@ -174,10 +175,14 @@ class QueryVisitor {
   }
 
   // The margin around a region within which a ball of radius `reach` beyond it may lie filed.
+  // A ball's centre lies within its cell grown by the grid's hysteresis, to a rounding (a
+  // millionth of a cell covers it); a wall is listed in the cell of each of its points.
   [[nodiscard]] static Vec2 margin(const State& w, Vec2 reach) {
-    const Vec2 cell = w.grid_valid ? w.grid.cell_size() : Vec2{};
+    const Vec2 cell = w.grid.cell_size();
+    const Vec2 hysteresis = w.grid.hysteresis();
     const double largest = largest_radius_now(w);
-    return {reach.x + largest + cell.x, reach.y + largest + cell.y};
+    return {reach.x + largest + hysteresis.x + 1e-6 * cell.x,
+            reach.y + largest + hysteresis.y + 1e-6 * cell.y};
   }
 
   // Calls ball(slot, position) and wall(id) for what the segment from a to a + d, grown by
@@ -280,10 +285,23 @@ struct FirstHit {
   [[nodiscard]] bool final_up_to(double s) const { return hit && hit.fraction <= s; }
 };
 
+// Whether a centre at p is farther than reach from the segment from o to o + d by more than the
+// rounding of the distance: such a ball cannot be met, and the closed form need not be asked.
+bool out_of_reach(Vec2 p, Vec2 o, Vec2 d, double reach) {
+  const Vec2 op = p - o;
+  const double dd = dot(d, d);
+  const double along = dd > 0.0 ? std::clamp(dot(op, d) / dd, 0.0, 1.0) : 0.0;
+  const double slack =
+      1e-9 * (reach + std::abs(op.x) + std::abs(op.y) + std::abs(d.x) + std::abs(d.y));
+  const double limit = reach + slack;
+  return length_squared(op - d * along) > limit * limit;
+}
+
 // A ray against ball `slot` at p: where o + s·d enters it (a ray starting inside sees nothing).
 template <typename State>
 std::optional<QueryHit> ray_meets_ball(const State& w, std::uint32_t slot, Vec2 p, Vec2 o, Vec2 d) {
   const double r = w.radius_at(slot, w.time);
+  if (out_of_reach(p, o, d, r)) return std::nullopt;
   // The ball moving by −d against the fixed point o: the same contact, from the ball's side.
   const Impact impact = sweep_ball_point({p, r}, -d, o);
   if (!impact.hit || impact.overlapping) return std::nullopt;
@@ -412,6 +430,7 @@ QueryHit World::cast_ball(Vec2 center, double radius, Vec2 translation,
       center, translation, Vec2{radius, radius},
       [&](std::uint32_t slot, Vec2 p) {
         const double r = w.radius_at(slot, w.time);
+        if (out_of_reach(p, center, translation, radius + r)) return;
         const Impact impact = sweep_ball_ball(moving, translation, {p, r});
         if (!impact.hit && !impact.overlapping) return;
         QueryHit hit;

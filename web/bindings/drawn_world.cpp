@@ -79,7 +79,23 @@ WallId DrawnWorld::first_own_wall() const {
   return scene_world_.world.def().boundary == Boundary::box ? 4 : 0;
 }
 
-double DrawnWorld::step(double dt) { return step_scene(scene_world_, dt); }
+double DrawnWorld::step(double dt) {
+  // step_scene runs a world with pockets or a thermostat piece by piece (each piece a World run
+  // of its own); for any other it is one World::step, whose contacts the World keeps.
+  step_in_pieces_ = !scene_world_.pockets.empty() || scene_world_.scene.thermostat.has_value();
+  step_contacts_.clear();
+  if (step_in_pieces_) {
+    step_balls_ = scene_world_.balls;
+  } else {
+    step_balls_.clear();
+  }
+  return step_scene(scene_world_, dt, step_in_pieces_ ? &step_contacts_ : nullptr);
+}
+
+std::span<const ContactEvent> DrawnWorld::step_contacts() const noexcept {
+  if (step_in_pieces_) return step_contacts_;
+  return scene_world_.world.contacts();
+}
 
 void DrawnWorld::scale_speeds(double factor) {
   if (!(factor > 0.0) || factor == kImmovable) {
@@ -168,6 +184,29 @@ Vec2 DrawnWorld::velocity(int index) const { return scene_world_.world.velocity(
 
 int DrawnWorld::last_step_contacts() const {
   return static_cast<int>(scene_world_.world.contacts().size());
+}
+
+int DrawnWorld::index_of(BallId ball) const {
+  if (ball.is_null()) return -1;
+  if (!present(ball)) {
+    const auto taken = std::find(step_balls_.begin(), step_balls_.end(), ball);
+    return taken == step_balls_.end() ? -1 : static_cast<int>(taken - step_balls_.begin());
+  }
+  const std::vector<BallId>& ids = scene_world_.balls;
+  // Balls added here and a scene's balls carry their index as user data; a world built elsewhere
+  // (a packing) may not, so the list is searched when the hint misses.
+  const std::uint64_t hint = scene_world_.world.user_data(ball);
+  if (hint < ids.size() && ids[static_cast<std::size_t>(hint)] == ball) {
+    return static_cast<int>(hint);
+  }
+  const auto found = std::find(ids.begin(), ids.end(), ball);
+  return found == ids.end() ? -1 : static_cast<int>(found - ids.begin());
+}
+
+int DrawnWorld::pocket_of(BallId ball) const {
+  const std::vector<BallId>& pockets = scene_world_.pockets;
+  const auto found = std::find(pockets.begin(), pockets.end(), ball);
+  return found == pockets.end() ? -1 : static_cast<int>(found - pockets.begin());
 }
 
 bool DrawnWorld::present(BallId ball) const {

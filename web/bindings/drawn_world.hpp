@@ -84,6 +84,19 @@ class DrawnWorld {
   [[nodiscard]] World& world() noexcept { return scene_world_.world; }
   // Contacts resolved by the last step.
   [[nodiscard]] int last_step_contacts() const;
+  // Every contact of the last step, in the order they happened, pockets' included: a world with
+  // pockets (or a thermostat) is stepped in pieces, and World::contacts() holds only the last
+  // piece's, so step keeps them all for such a world (and for any other reads the World's own).
+  [[nodiscard]] std::span<const ContactEvent> step_contacts() const noexcept;
+
+  // ---- naming balls (for the queries and contacts, world_queries.hpp) ----
+  // The World's handle of the ball at index; throws InvalidArgument as every call by index does.
+  [[nodiscard]] BallId handle(int index) const { return id(index); }
+  // The index of a ball of the world, or of one a pocket took during the last step (so that
+  // step_contacts can name it); -1 for a pocket or a ball this DrawnWorld does not list.
+  [[nodiscard]] int index_of(BallId ball) const;
+  // The index of a pocket (in pockets()), or -1 for any other ball.
+  [[nodiscard]] int pocket_of(BallId ball) const;
 
  private:
   [[nodiscard]] BallId id(int index) const;
@@ -97,6 +110,9 @@ class DrawnWorld {
   std::vector<ScenePocket> pockets_;
   std::vector<std::optional<Vec2>> held_velocity_;  // set while a ball is held
   std::vector<float> snapshot_;
+  std::vector<ContactEvent> step_contacts_;  // the last step's, when it went in pieces
+  std::vector<BallId> step_balls_;           // then also the balls by index as it began
+  bool step_in_pieces_ = false;
 };
 
 }  // namespace carom::web

@@ -13,6 +13,7 @@
 #include "js_error.hpp"
 #include "lattice_filling.hpp"
 #include "scene_loading.hpp"
+#include "world_queries.hpp"
 
 namespace carom::web {
 namespace {
@@ -75,6 +76,12 @@ Vec2 position(const DrawnWorld& w, int index) {
 }
 Vec2 velocity(const DrawnWorld& w, int index) {
   return guarded_call([&] { return w.velocity(index); });
+}
+double mass(const DrawnWorld& w, int index) {
+  return guarded_call([&] { return w.world().mass(w.handle(index)); });
+}
+double radius(const DrawnWorld& w, int index) {
+  return guarded_call([&] { return w.world().radius(w.handle(index)); });
 }
 
 // A Float32Array over the module's memory: no copy. It is valid until the next call into the
@@ -243,6 +250,8 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("release", &release)
       .function("position", &position)
       .function("velocity", &velocity)
+      .function("mass", &mass)
+      .function("radius", &radius)
       .function("snapshot", &snapshot)
       .function("segments", &segments)
       .function("arcs", &arcs)
@@ -263,7 +272,10 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("set_temperature", &set_temperature)
       .function("packing_fraction", &packing_fraction)
       .function("psi6", &psi6)
-      .function("contact_network", &contact_network);
+      .function("contact_network", &contact_network)
+      .function("cast_ball", &cast_ball)
+      .function("balls_in_circle", &balls_in_circle)
+      .function("step_contacts", &step_contacts);
 }
 
 }  // namespace carom::web

@@ -6,7 +6,7 @@ import {after, before, test} from 'node:test';
 import {OUTPUT, openBrowser, openPage} from './browser.mjs';
 
 const PAGES = ['index.html', 'two-balls.html', 'walls.html', 'many-balls.html', 'galton.html',
-               'pinball.html', 'compress.html'];
+               'pinball.html', 'compress.html', 'pool.html'];
 const VIEWPORTS = {
   desktop: {width: 1200, height: 900},
   phone: {width: 390, height: 844},  // a common phone's CSS width

@@ -122,10 +122,11 @@ struct World::Impl : detail::BallStore {
   // By slot, how gravity carries each ball (carriage.hpp): sized with the slots while gravity is
   // on, empty otherwise.
   std::vector<detail::Carriage> carriages;
-  // (jammed) The instant of the latest slow contact, and the handles of the balls in slow
-  // contacts at it.
+  // (jammed) The instant of the latest slow contact, the handles of the balls in slow contacts
+  // at it, and how many jams at it let a ball slide on along its support rather than rest.
   double jam_time = -std::numeric_limits<double>::infinity();
   std::vector<std::uint32_t> jam_balls;
+  std::size_t jam_slides = 0;
 
   // ---- handles ----
   // The slot of the live ball `id` names; throws InvalidArgument (naming `function`) for a null
@@ -294,6 +295,12 @@ struct World::Impl : detail::BallStore {
   // A ball sliding on a support that gravity presses against a free ball: pushes it along (both
   // then move with the contact forces that keep the three touching), where those forces push.
   bool push_along(std::uint32_t slider, std::uint32_t pushed, Vec2 normal);
+  // A slow contact, at a jam, of a ball sliding down a sloping wall (`normal` from it to
+  // `other`) with a free ball that presses it into that wall, or with a ball sliding on the same
+  // segment (a free one that touches that segment slides on it first): the one impulse that
+  // leaves them on their lines and without approach, the wall bearing its part. False where
+  // neither is so (changing nothing but such a landing on the segment).
+  bool meet_on_support(std::uint32_t slider, std::uint32_t other, Vec2 normal);
   // Two balls pressed together that neither can carry: both rest, each on the other (and on its
   // own support); false, changing nothing, where `only_slow` and either is faster than its rest
   // speed.

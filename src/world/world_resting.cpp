@@ -257,6 +257,65 @@ bool World::Impl::push_along(std::uint32_t slider, std::uint32_t pushed, Vec2 no
   return true;
 }
 
+bool World::Impl::meet_on_support(std::uint32_t slider, std::uint32_t other, Vec2 normal) {
+  if (!movable(slider) || !movable(other)) return false;
+  const Carriage& s = carriages[slider];
+  const Carriage& o = carriages[other];
+  // (A sloping wall only: on a level one, acceleration zero, a jam that stops is held up; over a
+  // ball of a pile it stops as ever, the pile settling by such jams.)
+  if (s.state != Carried::sliding || s.supports != 1 || s.acceleration == Vec2{}) return false;
+  const std::uint32_t key = s.support[0];
+  if ((key & detail::kBallSupport) != 0) return false;
+  const Vec2 ns = s.normal;
+  const double c = dot(ns, normal);
+  BallSlot& a = balls[slider];
+  BallSlot& b = balls[other];
+  if (o.state == Carried::free && !walls[key].is_arc) {
+    // A free ball that touches the slider's segment too, not leaving it, slides on it as well.
+    const Vec2 toward = detail::nearest_point(walls[key], b.position) - b.position;
+    const double gap = length(toward) - radius_of(other);
+    if (gap <= 2.0 * def.rest_height * radius_of(other) && toward != Vec2{}) {
+      const Vec2 wall_normal = normalized(toward);
+      if (dot(wall_normal, ns) > 1.0 - 0x1p-40 && dot(b.velocity, wall_normal) >= 0.0) {
+        b.velocity = without_part_along(b.velocity, wall_normal);
+        settle(other, key, wall_normal, Carriage{o});
+      }
+    }
+  }
+  const double inverse_s = species_of(slider).inverse_mass;
+  const double inverse_o = species_of(other).inverse_mass;
+  const double approach = std::max(0.0, dot(a.velocity - b.velocity, normal));
+  double impulse = 0.0;
+  if (o.state == Carried::free) {
+    // The limit of the slow contacts handed back and forth at this instant between the two balls
+    // and the support (each taking the normal speed) is one impulse P along the normal n, whose
+    // part along the support's normal ns the support bears: the slider keeps to its line and the
+    // two stop approaching. With c = n·ns < 0 the impulse presses the slider into its support
+    // (else the support takes no part, and this is no such press).
+    if (!(c < 0.0)) return false;
+    impulse = approach / ((1.0 - c * c) * inverse_s + inverse_o);
+  } else if (o.state == Carried::sliding && o.supports == 1 && o.support[0] == key &&
+             !walls[key].is_arc && dot(o.normal, ns) > 1.0 - 0x1p-40) {
+    // Both slide along one segment: a contact along the line, taking the approach (the segment
+    // bears the rest), so that they slide on at one speed.
+    impulse = approach / ((1.0 - c * c) * (inverse_s + inverse_o));
+  } else {
+    return false;
+  }
+  if (!std::isfinite(impulse)) return false;
+  wake_carried(slider);  // their courses change
+  a.velocity -= without_part_along(normal, ns) * (impulse * inverse_s);
+  a.velocity = without_part_along(a.velocity, ns);  // (exactly along the support)
+  if (o.state == Carried::free) {
+    b.velocity += normal * (impulse * inverse_o);
+  } else {
+    wake_carried(other);
+    b.velocity += without_part_along(normal, o.normal) * (impulse * inverse_o);
+    b.velocity = without_part_along(b.velocity, o.normal);
+  }
+  return true;
+}
+
 bool World::Impl::hold_each_other(std::uint32_t i, std::uint32_t j, bool only_slow) {
   // A jam of pressing balls (one pushed by a second into a wall or a third) rests as it stands,
   // each on the other and on what it stood on. Only kinetic energy is taken.
@@ -362,6 +421,7 @@ bool World::Impl::jammed(double t, std::uint32_t i, std::uint32_t j, bool inelas
   if (!(std::abs(t - jam_time) <= 0x1p-44 * std::abs(t))) {
     jam_time = t;
     jam_balls.clear();
+    jam_slides = 0;
   }
   // A ball pressed between two others (or a ball and a wall) would pass the press back and forth
   // infinitely often at this instant, each time slower by the restitution: the three are a jam.
@@ -399,8 +459,26 @@ bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall
     resolved = speed_change > 0.0;
     if (resolved) record_ball_wall(i, wall, t, point, normal, approach, speed_change);
   }
-  if (movable_ball && now.hit && approach <= rest_speed(i) && jammed(t, i, i, restitution < 1.0)) {
-    // (A jam against a wall, as in resolve_pair_under_gravity.)
+  // Whether gravity presses the ball into the wall, or its own acceleration does (a ball sliding
+  // down a slope into an upright wall, or pushed into it by another).
+  const bool bears = dot(def.gravity, normal) > 0.0 || dot(before.acceleration, normal) > 0.0;
+  // Whether the wall alone holds the ball up where it touches: gravity presses it in and has no
+  // part along it.
+  const bool level =
+      dot(def.gravity, normal) > 0.0 &&
+      length(without_part_along(def.gravity, normal)) <= kLevel * length(def.gravity);
+  const bool jam =
+      movable_ball && now.hit && approach <= rest_speed(i) && jammed(t, i, i, restitution < 1.0);
+  // (A jam against a wall, as in resolve_pair_under_gravity. Against a wall it bears on that
+  // cannot hold it alone, a slope, an inelastic ball slides on instead, below: no ball rests on a
+  // frictionless slope, and one resting there on the wall alone would stay for ever, since a
+  // wall never moves to wake it. The press it hands back to the ball that pressed it makes that
+  // pair a jam. Past kJamContacts such jams at this instant it rests: the press may be handed
+  // round and round.)
+  const bool slides_on =
+      jam && !in_bowl && !level && bears && restitution < 1.0 && jam_slides < kJamContacts;
+  if (slides_on) ++jam_slides;
+  if (jam && !slides_on) {
     wake_carried(i);
     carriages[i] = Carriage{};
     carriages[i].state = Carried::resting;
@@ -416,9 +494,6 @@ bool World::Impl::resolve_wall_under_gravity(std::uint32_t i, std::uint32_t wall
     // presses it in.
     const double leaving = -dot(a.velocity, normal);
     const double slow = rest_speed(i) * (restitution < 1.0 ? 1.0 : kElasticRest);
-    // (Or where its own acceleration does: a ball sliding down a slope into an upright wall, or
-    // pushed into it by another.)
-    const bool bears = dot(def.gravity, normal) > 0.0 || dot(before.acceleration, normal) > 0.0;
     if (bears && leaving <= slow) {
       if (!in_bowl) {
         a.velocity = without_part_along(a.velocity, normal);
@@ -469,7 +544,19 @@ bool World::Impl::resolve_pair_under_gravity(std::uint32_t i, std::uint32_t j, d
     // engine solves no chains of contact forces). In flight the balls move on together; on a
     // support, it rests as it stands.
     if (move_together(i, j, t)) return false;
-    hold_each_other(i, j, false);
+    // A ball sliding down a sloping wall, pressed into it by a free ball or met by one sliding on
+    // the same segment, slides on: the wall bears the press, and the two, no longer approaching,
+    // part, or the slider pushes the free ball along. Else they rest as they stand.
+    // (Past kJamContacts such jams at this instant, they rest: the press may be handed round
+    // and round between balls that slide on.)
+    const bool slides_on = jam_slides < kJamContacts &&
+                           (meet_on_support(i, j, normal) || meet_on_support(j, i, -normal));
+    if (slides_on) ++jam_slides;
+    // (Pressed together still? The carriages may have changed.)
+    const bool still_pressing = dot(acceleration_of(i) - acceleration_of(j), normal) > 0.0;
+    if (!slides_on || (still_pressing && !push_along(i, j, normal) && !push_along(j, i, -normal))) {
+      hold_each_other(i, j, false);
+    }
     ++a.version;
     ++b.version;
     predict_under_gravity(i);

@@ -208,6 +208,48 @@ TEST(WorldResting, TurningGravityWakesRestingBalls) {
   EXPECT_EQ(world.velocity(ball), (Vec2{}));
 }
 
+TEST(WorldResting, BallGrazedWhileSlidingDownASlopeSlidesOn) {
+  // A ball sliding down a frictionless slope (1 in 2) at 4.5 is grazed from above by a faster
+  // ball (approach 0.064, below the rest speed ≈ 0.094): the graze presses it into the slope,
+  // a second slow contact at one instant. No ball can rest on a frictionless slope: both slide
+  // or fall on, never gaining energy, and end on the floor below.
+  World world(box_under_gravity({20.0, 30.0}, 0.6));
+  world.add_segment({{20.0, 14.0}, {12.0, 10.0}});
+  const Vec2 up_normal = normalized(Vec2{-1.0, 2.0});
+  const Vec2 start = Vec2{16.0, 12.0} + up_normal * (0.45 + 1e-9);
+  const BallId slider = world.add_ball(resting_test_ball(start, 0.45, {-4.0, -2.0}));
+  const BallId grazer =
+      world.add_ball(resting_test_ball(start + Vec2{-0.7903895147049271, 0.43045379720529203}, 0.45,
+                                       {-4.956411782090224, -3.8890548140545436}));
+  run_never_gaining(world, 0.2);
+  // Still on the slope, faster down it than it started (gravity's part along it is g/√5).
+  EXPECT_GT(dot(world.velocity(slider), Vec2{-2.0, -1.0}), 4.0 * std::sqrt(5.0));
+  EXPECT_GT(length(world.position(slider) - start), 0.5);
+  run_never_gaining(world, 10.0);
+  for (const BallId id : {slider, grazer}) {
+    EXPECT_LT(world.position(id).y, 2.0) << "ball " << id.index;
+  }
+}
+
+TEST(WorldResting, BallsSlidingDownASlopeMeetSlowlyAndSlideOnTogether) {
+  // Two balls sliding down a slope (1 in 2), the upper one 0.05 faster, 0.005 apart: they meet
+  // below the rest speed (≈ 0.099), the contact presses each onto the slope at that instant, a
+  // jam. Neither can rest on a frictionless slope: they slide on at one speed, the mean.
+  World world(box_under_gravity({30.0, 30.0}, 0.5));
+  world.add_segment({{2.0, 20.0}, {26.0, 8.0}});
+  const Vec2 down = normalized(Vec2{2.0, -1.0});
+  const Vec2 up_normal = normalized(Vec2{1.0, 2.0});
+  const Vec2 start = Vec2{6.0, 18.0} + up_normal * (0.5 + 1e-9);
+  const BallId upper = world.add_ball(resting_test_ball(start, 0.5, down * 1.0));
+  const BallId lower = world.add_ball(resting_test_ball(start + down * 1.005, 0.5, down * 0.95));
+  run_never_gaining(world, 0.5);
+  const double speed = 0.975 + 9.81 / std::sqrt(5.0) * world.time();
+  for (const BallId id : {upper, lower}) {
+    EXPECT_NEAR(dot(world.velocity(id), down), speed, 1e-9) << "ball " << id.index;
+    EXPECT_NEAR(dot(world.velocity(id), up_normal), 0.0, 1e-12) << "ball " << id.index;
+  }
+}
+
 // Three balls touching in a row in the air, the outer two thrown at each other at `speed`.
 World row_in_flight(double restitution, double speed) {
   World world(box_under_gravity({20.0, 10.0}, restitution));

@@ -23,6 +23,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "carom/filter.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
 #include "carom/world.hpp"
@@ -75,6 +76,7 @@ struct SceneBall {
   double mass = 1.0;                  // > 0, or kImmovable ("mass": "immovable" in JSON)
   std::optional<double> restitution;  // in [0, 1]; unset: the world's
   std::optional<std::string> color;   // any CSS colour text ("#ff8800", "red"); unset: by speed
+  CollisionFilter filter;             // which balls and walls it meets ("filter" in JSON)
 };
 
 struct ScenePolyline {

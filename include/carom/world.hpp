@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "carom/bounce.hpp"
+#include "carom/filter.hpp"
 #include "carom/handles.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
@@ -136,6 +137,9 @@ class World {
   // ---- balls ----
   // Throws if the ball overlaps another ball or a wall, or lies outside a box.
   BallId add_ball(const BallDef& def);
+  // The same with the ball's collision filter (carom/filter.hpp): it may be placed overlapping
+  // what the filter lets it pass through.
+  BallId add_ball(const BallDef& def, const CollisionFilter& filter);
   void remove_ball(BallId id);
   // Makes room for `count` balls in all (live ones and removed ones' reusable handles), so that
   // adding up to that many allocates nothing more: like std::vector::reserve, it spares the
@@ -271,6 +275,17 @@ class World {
   // between steps. kT finite and > 0; a world whose balls do not move relative to their centre
   // of mass has nothing to scale (returns 0).
   double set_temperature(double kT);
+
+  // ---- filters (carom/filter.hpp; docs/world.md, "Filters") ----
+  // A pair whose filters do not meet passes through each other: no contact, no response, and
+  // placing one overlapping the other is allowed. Changing a ball's filter between steps
+  // re-predicts that ball (and, through its version, the pending events of balls with it);
+  // changing a wall's re-predicts every ball at the next run. Under gravity what rested on the
+  // ball or wall falls.
+  void set_filter(BallId id, const CollisionFilter& filter);
+  [[nodiscard]] CollisionFilter filter(BallId id) const;
+  void set_wall_filter(WallId wall, const CollisionFilter& filter);
+  [[nodiscard]] CollisionFilter wall_filter(WallId wall) const;
 
   // ---- changing balls between steps ----
   void set_velocity(BallId id, Vec2 velocity);

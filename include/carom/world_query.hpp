@@ -17,6 +17,9 @@ struct QueryFilter {
   bool balls = true;  // false: the query sees no ball
   bool walls = true;  // false: the query sees no wall
   BallId ignore;      // a ball it does not see (a cast of a ball of the world, from where it is)
+  // The categories it sees: a ball or wall whose CollisionFilter's category shares no bit with
+  // it is hidden (carom/filter.hpp).
+  std::uint64_t mask = ~0ULL;
   // When set, called for each ball the query would report (or weigh, for the casts); false hides
   // it. Called in no particular order, and not for balls the query can rule out by distance.
   std::function<bool(BallId)> accept;

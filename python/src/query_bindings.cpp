@@ -18,8 +18,10 @@ namespace {
 
 // The filter the keywords describe; an `accept` callable is called with the GIL held.
 QueryFilter filter_of(bool balls, bool walls, const std::optional<std::uint64_t>& ignore,
-                      const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+                      const std::optional<std::function<bool(std::uint64_t)>>& accept,
+                      std::uint64_t mask = ~0ULL) {
   QueryFilter filter;
+  filter.mask = mask;
   filter.balls = balls;
   filter.walls = walls;
   if (ignore) filter.ignore = ball_id(*ignore);
@@ -75,7 +77,8 @@ Vec2 row(const py::detail::unchecked_reference<double, 2>& view, py::ssize_t i) 
 py::array cast_rays(const py::object& self, const DoubleArray& origins,
                     const DoubleArray& translations, bool balls, bool walls,
                     const std::optional<std::uint64_t>& ignore,
-                    const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+                    const std::optional<std::function<bool(std::uint64_t)>>& accept,
+                    std::uint64_t mask) {
   const World& world = unwrap_world(self);
   if (origins.ndim() != 2 || origins.shape(1) != 2) {
     throw py::value_error("origins must have shape (N, 2)");
@@ -94,7 +97,7 @@ py::array cast_rays(const py::object& self, const DoubleArray& origins,
   auto* records = static_cast<RayRecord*>(out.mutable_data());
   const auto from = origins.unchecked<2>();
   const double* moves = translations.data();
-  const QueryFilter filter = filter_of(balls, walls, ignore, accept);
+  const QueryFilter filter = filter_of(balls, walls, ignore, accept, mask);
   answer(filter, [&] {
     for (py::ssize_t i = 0; i < n; ++i) {
       const Vec2 d =
@@ -160,52 +163,53 @@ void bind_queries(py::module_& m) {
       py::cpp_function(
           [](const py::object& self, Vec2 origin, Vec2 translation, bool balls, bool walls,
              const std::optional<std::uint64_t>& ignore,
-             const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+             const std::optional<std::function<bool(std::uint64_t)>>& accept, std::uint64_t mask) {
             const World& world = unwrap_world(self);
-            const QueryFilter filter = filter_of(balls, walls, ignore, accept);
+            const QueryFilter filter = filter_of(balls, walls, ignore, accept, mask);
             return hit_or_none(
                 answer(filter, [&] { return world.cast_ray(origin, translation, filter); }));
           },
           py::is_method(world_type), py::name("cast_ray"), py::arg("origin"),
           py::arg("translation"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
-          py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::arg("ignore") = py::none(), py::arg("accept") = py::none(), py::arg("mask") = ~0ULL,
           "The first ball or wall the segment from origin to origin + translation meets, or "
           "None (a ray starting inside a ball does not see it; walls are met from either side). "
-          "Filter: balls/walls False hides them, ignore an id, accept(id) -> bool"));
+          "Filter: balls/walls False hides them, ignore an id, accept(id) -> bool, mask the "
+          "categories seen (CollisionFilter.category bits)"));
   add("cast_ray_all",
       py::cpp_function(
           [](const py::object& self, Vec2 origin, Vec2 translation, bool balls, bool walls,
              const std::optional<std::uint64_t>& ignore,
-             const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+             const std::optional<std::function<bool(std::uint64_t)>>& accept, std::uint64_t mask) {
             const World& world = unwrap_world(self);
-            const QueryFilter filter = filter_of(balls, walls, ignore, accept);
+            const QueryFilter filter = filter_of(balls, walls, ignore, accept, mask);
             return answer(filter, [&] { return world.cast_ray_all(origin, translation, filter); });
           },
           py::is_method(world_type), py::name("cast_ray_all"), py::arg("origin"),
           py::arg("translation"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
-          py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::arg("ignore") = py::none(), py::arg("accept") = py::none(), py::arg("mask") = ~0ULL,
           "Every ball and wall the segment meets, by fraction, each once (a list of QueryHit)"));
   add("cast_rays",
-      py::cpp_function(&cast_rays, py::is_method(world_type), py::name("cast_rays"),
-                       py::arg("origins"), py::arg("translations"), py::kw_only(),
-                       py::arg("balls") = true, py::arg("walls") = true,
-                       py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
-                       "cast_ray for N rays at once (origins (N, 2); translations (N, 2) or one "
-                       "(2,)): a structured array of first hits (kind: 0 nothing, 1 ball, 2 "
-                       "wall; ball, wall, fraction, point, normal), the GIL released"));
+      py::cpp_function(
+          &cast_rays, py::is_method(world_type), py::name("cast_rays"), py::arg("origins"),
+          py::arg("translations"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
+          py::arg("ignore") = py::none(), py::arg("accept") = py::none(), py::arg("mask") = ~0ULL,
+          "cast_ray for N rays at once (origins (N, 2); translations (N, 2) or one "
+          "(2,)): a structured array of first hits (kind: 0 nothing, 1 ball, 2 "
+          "wall; ball, wall, fraction, point, normal), the GIL released"));
   add("cast_ball",
       py::cpp_function(
           [](const py::object& self, Vec2 center, double radius, Vec2 translation, bool balls,
              bool walls, const std::optional<std::uint64_t>& ignore,
-             const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+             const std::optional<std::function<bool(std::uint64_t)>>& accept, std::uint64_t mask) {
             const World& world = unwrap_world(self);
-            const QueryFilter filter = filter_of(balls, walls, ignore, accept);
+            const QueryFilter filter = filter_of(balls, walls, ignore, accept, mask);
             return hit_or_none(answer(
                 filter, [&] { return world.cast_ball(center, radius, translation, filter); }));
           },
           py::is_method(world_type), py::name("cast_ball"), py::arg("center"), py::arg("radius"),
           py::arg("translation"), py::kw_only(), py::arg("balls") = true, py::arg("walls") = true,
-          py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::arg("ignore") = py::none(), py::arg("accept") = py::none(), py::arg("mask") = ~0ULL,
           "A ball of radius at center moved by translation while the world stands still: the "
           "first ball or wall it touches, approaching, or None (started overlapping: fraction 0, "
           "overlapping). The pool aim line: ignore the cue ball"));
@@ -213,41 +217,42 @@ void bind_queries(py::module_& m) {
       py::cpp_function(
           [](const py::object& self, Vec2 point, bool balls,
              const std::optional<std::uint64_t>& ignore,
-             const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+             const std::optional<std::function<bool(std::uint64_t)>>& accept, std::uint64_t mask) {
             const World& world = unwrap_world(self);
-            const QueryFilter filter = filter_of(balls, false, ignore, accept);
+            const QueryFilter filter = filter_of(balls, false, ignore, accept, mask);
             return id_array(answer(filter, [&] { return world.balls_at_point(point, filter); }));
           },
           py::is_method(world_type), py::name("balls_at_point"), py::arg("point"), py::kw_only(),
           py::arg("balls") = true, py::arg("ignore") = py::none(), py::arg("accept") = py::none(),
+          py::arg("mask") = ~0ULL,
           "The ids of the balls holding the point (edge included), in the order of ids"));
   add("balls_in_circle",
       py::cpp_function(
           [](const py::object& self, Vec2 center, double radius, bool balls,
              const std::optional<std::uint64_t>& ignore,
-             const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+             const std::optional<std::function<bool(std::uint64_t)>>& accept, std::uint64_t mask) {
             const World& world = unwrap_world(self);
-            const QueryFilter filter = filter_of(balls, false, ignore, accept);
+            const QueryFilter filter = filter_of(balls, false, ignore, accept, mask);
             return id_array(
                 answer(filter, [&] { return world.balls_in_circle(center, radius, filter); }));
           },
           py::is_method(world_type), py::name("balls_in_circle"), py::arg("center"),
           py::arg("radius"), py::kw_only(), py::arg("balls") = true, py::arg("ignore") = py::none(),
-          py::arg("accept") = py::none(),
+          py::arg("accept") = py::none(), py::arg("mask") = ~0ULL,
           "The ids of the balls touching or overlapping the circle, in the order of ids"));
   add("balls_in_box",
       py::cpp_function(
           [](const py::object& self, Vec2 lower, Vec2 upper, bool balls,
              const std::optional<std::uint64_t>& ignore,
-             const std::optional<std::function<bool(std::uint64_t)>>& accept) {
+             const std::optional<std::function<bool(std::uint64_t)>>& accept, std::uint64_t mask) {
             const World& world = unwrap_world(self);
-            const QueryFilter filter = filter_of(balls, false, ignore, accept);
+            const QueryFilter filter = filter_of(balls, false, ignore, accept, mask);
             return id_array(
                 answer(filter, [&] { return world.balls_in_box(lower, upper, filter); }));
           },
           py::is_method(world_type), py::name("balls_in_box"), py::arg("lower"), py::arg("upper"),
           py::kw_only(), py::arg("balls") = true, py::arg("ignore") = py::none(),
-          py::arg("accept") = py::none(),
+          py::arg("accept") = py::none(), py::arg("mask") = ~0ULL,
           "The ids of the balls touching or overlapping the box [lower, upper], in the order of "
           "ids"));
 }

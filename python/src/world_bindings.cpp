@@ -236,7 +236,8 @@ py::array_t<std::uint64_t> add_balls(PyWorld& self, const DoubleArray& positions
                                      const std::optional<DoubleArray>& velocities,
                                      const py::object& radii, const py::object& masses,
                                      const py::object& restitution,
-                                     const std::optional<py::array_t<std::uint64_t>>& user_data) {
+                                     const std::optional<py::array_t<std::uint64_t>>& user_data,
+                                     const CollisionFilter& filter) {
   require_points(positions, "positions", -1);
   const py::ssize_t n = positions.shape(0);
   if (velocities) require_points(*velocities, "velocities", n);
@@ -265,7 +266,7 @@ py::array_t<std::uint64_t> add_balls(PyWorld& self, const DoubleArray& positions
     // NaN in an array of restitutions leaves that ball's unset (the world's).
     if (!e.empty() && !std::isnan(e[k])) def.restitution = e[k];
     if (user_data) def.user_data = user_data->at(i);
-    out(i) = id_number(world.add_ball(def));
+    out(i) = id_number(world.add_ball(def, filter));
   }
   return ids;
 }
@@ -360,6 +361,29 @@ PyWorld load_bytes(const py::bytes& data) {
 }  // namespace
 
 void bind_world(py::module_& m) {
+  py::class_<CollisionFilter>(
+      m, "CollisionFilter",
+      "Which balls and walls meet: two meet when each one's mask has a bit of the other's "
+      "category, unless they share a group other than 0 (positive: always meet; negative: never)")
+      .def(py::init([](std::uint64_t category, std::uint64_t mask, std::int32_t group) {
+             return CollisionFilter{category, mask, group};
+           }),
+           py::kw_only(), py::arg("category") = CollisionFilter{}.category,
+           py::arg("mask") = CollisionFilter{}.mask, py::arg("group") = 0)
+      .def_readwrite("category", &CollisionFilter::category, "What it is: bits")
+      .def_readwrite("mask", &CollisionFilter::mask, "The categories it meets: bits")
+      .def_readwrite("group", &CollisionFilter::group,
+                     "0, or a group whose members always (> 0) or never (< 0) meet")
+      .def(
+          "__eq__", [](const CollisionFilter& a, const CollisionFilter& b) { return a == b; },
+          "Equal in every field")
+      .def("__repr__", [](const CollisionFilter& f) {
+        return "carom.CollisionFilter(category=" + std::to_string(f.category) +
+               ", mask=" + std::to_string(f.mask) + ", group=" + std::to_string(f.group) + ")";
+      });
+  m.def("should_collide", &should_collide, py::arg("a"), py::arg("b"),
+        "Whether two filters let their owners meet");
+
   py::class_<PyWorld>(m, "World",
                       "A world of moving balls, walls and arcs, advanced in exact event order")
       .def(py::init([](const std::string& boundary, Vec2 lower, Vec2 upper, double restitution,
@@ -379,18 +403,21 @@ void bind_world(py::module_& m) {
       .def(
           "add_ball",
           [](PyWorld& w, Vec2 position, Vec2 velocity, double radius, double mass,
-             std::optional<double> restitution, std::uint64_t user_data) {
+             std::optional<double> restitution, std::uint64_t user_data,
+             const CollisionFilter& filter) {
             BallDef def{position, velocity, radius, mass, restitution, user_data};
-            return id_number(w.world().add_ball(def));
+            return id_number(w.world().add_ball(def, filter));
           },
           py::arg("position"), py::arg("velocity") = Vec2{}, py::arg("radius") = 1.0,
           py::arg("mass") = 1.0, py::arg("restitution") = py::none(), py::arg("user_data") = 0,
+          py::arg("filter") = CollisionFilter{},
           "Adds one ball (restitution None: the world's); returns its id")
       .def("add_balls", &add_balls, py::arg("positions"), py::arg("velocities") = py::none(),
            py::arg("radii") = 1.0, py::arg("masses") = 1.0, py::arg("restitution") = py::none(),
-           py::arg("user_data") = py::none(),
+           py::arg("user_data") = py::none(), py::arg("filter") = CollisionFilter{},
            "Adds N balls from arrays (positions (N, 2); velocities (N, 2); radii, masses, "
-           "restitution each a number or (N,); NaN restitution: the world's); returns their ids")
+           "restitution each a number or (N,); NaN restitution: the world's; filter: one "
+           "CollisionFilter for all); returns their ids")
       .def(
           "remove_ball", [](PyWorld& w, std::uint64_t id) { w.world().remove_ball(id_of(id)); },
           py::arg("id"), "Removes a ball; its id becomes stale (InvalidArgument after)")
@@ -532,6 +559,27 @@ void bind_world(py::module_& m) {
           "collision_count", [](const PyWorld& w) { return w.world().collision_count(); },
           "Contacts resolved since the world was made")
       // ---- changing the world between steps ----
+      .def(
+          "set_filter",
+          [](PyWorld& w, std::uint64_t id, const CollisionFilter& filter) {
+            w.world().set_filter(id_of(id), filter);
+          },
+          py::arg("id"), py::arg("filter"),
+          "Sets a ball's CollisionFilter between steps (pairs whose filters do not meet pass "
+          "through each other)")
+      .def(
+          "filter", [](const PyWorld& w, std::uint64_t id) { return w.world().filter(id_of(id)); },
+          py::arg("id"), "A ball's CollisionFilter")
+      .def(
+          "set_wall_filter",
+          [](PyWorld& w, WallId wall, const CollisionFilter& filter) {
+            w.world().set_wall_filter(wall, filter);
+          },
+          py::arg("wall"), py::arg("filter"),
+          "Sets a wall's CollisionFilter (not a box boundary's sides, which keep every ball in)")
+      .def(
+          "wall_filter", [](const PyWorld& w, WallId wall) { return w.world().wall_filter(wall); },
+          py::arg("wall"), "A wall's CollisionFilter")
       .def(
           "set_velocity",
           [](PyWorld& w, std::uint64_t id, Vec2 v) { w.world().set_velocity(id_of(id), v); },

@@ -102,3 +102,28 @@ def test_queries_refuse_bad_arguments():
         world.cast_rays(np.zeros((3, 3)), np.zeros(2))
     with pytest.raises(ValueError, match="translations"):
         world.cast_rays(np.zeros((3, 2)), np.zeros((2, 2)))
+
+
+def test_collision_filters_let_kinds_pass_through_and_queries_see_by_mask():
+    world = carom.World()
+    red = carom.CollisionFilter(category=1, mask=1)
+    blue = carom.CollisionFilter(category=2, mask=2)
+    (a,) = world.add_balls(np.array([[0.0, 0.0]]), velocities=[[1.0, 0.0]], radii=0.5, filter=red)
+    (b,) = world.add_balls(np.array([[4.0, 0.0]]), velocities=[[-1.0, 0.0]], radii=0.5,
+                           filter=blue)
+    assert world.filter(a) == red and world.filter(b) == blue and not carom.should_collide(red, blue)
+    world.run_until(10.0)
+    assert world.collision_count == 0  # straight through each other
+    assert world.positions.tolist() == [[10.0, 0.0], [-6.0, 0.0]]
+    assert world.cast_ray((-20, 0), (40, 0), mask=1).ball == a
+    assert world.cast_ray((-20, 0), (40, 0), mask=2).ball == b
+    assert world.balls_in_box((-30, -1), (30, 1), mask=1).tolist() == [a]
+    world.set_filter(b, carom.CollisionFilter())
+    world.set_velocity(a, (-1.0, 0.0))
+    world.set_velocity(b, (1.0, 0.0))
+    world.run_until(20.0)
+    assert world.collision_count == 1  # now they meet
+    assert world.cast_ray((-20, 0), (40, 0), mask=2) is None
+    wall = world.add_segment((0, -5), (0, 5))
+    world.set_wall_filter(wall, blue)
+    assert world.wall_filter(wall) == blue

@@ -133,6 +133,8 @@ void check_walls(const Scene& scene, const std::vector<SceneBall>& balls, const 
   const std::vector<SceneWall> walls = scene_walls(scene);
   if (walls.empty()) return;
   for (std::size_t i = 0; i < balls.size(); ++i) {
+    // A scene's walls have the default filter: a ball whose filter does not meet it passes.
+    if (!should_collide(balls[i].filter, CollisionFilter{})) continue;
     for (const SceneWall& wall : walls) {
       const double gap = distance_to_wall(wall, balls[i].position) - balls[i].radius;
       if (gap < -kRoundingOverlap * balls[i].radius) {
@@ -188,6 +190,10 @@ void check_overlaps(const Scene& scene, const std::vector<SceneBall>& balls,
     double overlap = 0.0;
     grid.for_each_near(centre(i), [&](std::size_t j) {
       if (hit) return;
+      // Balls whose filters do not meet may overlap (pockets keep the default filter).
+      const CollisionFilter none_set;
+      if (!should_collide(i < n ? balls[i].filter : none_set, j < n ? balls[j].filter : none_set))
+        return;
       const double reach = radius(i) + radius(j);
       const double gap = length(grid.offset(centre(i), centre(j)));
       if (gap < reach * (1.0 - kRoundingOverlap)) {

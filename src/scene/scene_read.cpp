@@ -132,9 +132,28 @@ std::optional<SceneThermostat> read_thermostat(const ObjectFields& fields) {
   return thermostat;
 }
 
+// A ball's "filter": {"category": bits, "mask": bits, "group": whole number}, each optional.
+CollisionFilter read_filter(const ObjectFields& fields) {
+  CollisionFilter filter;
+  if (!fields.has("filter")) return filter;
+  const ObjectFields f(fields.source(), fields.at("filter"), fields.path_of("filter"),
+                       {"category", "mask", "group"});
+  if (f.has("category")) filter.category = f.whole_number("category");
+  if (f.has("mask")) filter.mask = f.whole_number("mask");
+  if (f.has("group")) {
+    const double group = f.number("group");
+    if (!(group == std::floor(group) && group >= -2147483648.0 && group <= 2147483647.0)) {
+      f.fail("group", "must be a whole number from -2147483648 to 2147483647");
+    }
+    filter.group = static_cast<std::int32_t>(group);
+  }
+  return filter;
+}
+
 SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
-  const ObjectFields f(source, json, path,
-                       {"name", "position", "velocity", "radius", "mass", "restitution", "color"});
+  const ObjectFields f(
+      source, json, path,
+      {"name", "position", "velocity", "radius", "mass", "restitution", "color", "filter"});
   SceneBall ball;
   ball.name = f.optional_string("name");
   ball.position = f.vector("position");
@@ -143,6 +162,7 @@ SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const 
   ball.mass = mass(f);
   ball.restitution = restitution(f);
   ball.color = color(f);
+  ball.filter = read_filter(f);
   return ball;
 }
 

@@ -97,7 +97,8 @@ SceneWorld make_world(const Scene& scene) {
     const SceneBall& b = balls[i];
     try {
       const BallId id = sw.world.add_ball(
-          {b.position, b.velocity, b.radius, b.mass, b.restitution, static_cast<std::uint64_t>(i)});
+          {b.position, b.velocity, b.radius, b.mass, b.restitution, static_cast<std::uint64_t>(i)},
+          b.filter);
       sw.balls.push_back(id);
       if (b.name) sw.by_name[*b.name] = id;
     } catch (const InvalidArgument& error) {

@@ -61,6 +61,15 @@ std::string ball_line(const SceneBall& b) {
   line.add("radius", num(b.radius)).add("mass", num(b.mass));
   if (b.restitution) line.add("restitution", num(*b.restitution));
   if (b.color) line.add("color", str(*b.color));
+  if (b.filter != CollisionFilter{}) {
+    Line filter;
+    const CollisionFilter defaults;
+    if (b.filter.category != defaults.category)
+      filter.add("category", std::to_string(b.filter.category));
+    if (b.filter.mask != defaults.mask) filter.add("mask", std::to_string(b.filter.mask));
+    if (b.filter.group != defaults.group) filter.add("group", std::to_string(b.filter.group));
+    line.add("filter", filter.done());
+  }
   return line.done();
 }
 

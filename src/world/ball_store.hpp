@@ -23,8 +23,9 @@ namespace carom::detail {
 struct BallInfo {
   std::uint64_t user_data = 0;
   std::uint32_t generation = 1;  // the live (or next) generation; never 0
+  std::uint32_t filter = 0;      // its CollisionFilter's number in the world's FilterTable
 };
-static_assert(sizeof(BallInfo) == 16);  // with 4 bytes of padding
+static_assert(sizeof(BallInfo) == 16);
 
 struct BallStore {
   // By slot: the engine's data. Slots are re-ordered by grid cell from time to time (renumber),

@@ -98,6 +98,7 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball
   const detail::Species& kind = species[b.species];
   const Ball shape{p, kind.radius};
   for (const std::uint32_t w : grid.walls(cell)) {
+    if (!meets_wall(ball, w)) continue;  // its filter lets it through
     const double horizon = best.time < kInfinity ? best.time - time : kFarFuture;
     const Impact impact = detail::time_of_impact(walls[w], shape, v, horizon);
     if (!impact.hit) continue;
@@ -175,6 +176,10 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::take_hits(std::uint32_t hits, std::
                                                        Event& best) const {
   const detail::PairBatch& batch = pair_batch;
   bool found = hits != 0;
+  if (filters.active()) [[unlikely]] {
+    hits = meeting(query.self, batch.other.data(), hits);
+    rescales = meeting(query.self, batch.other.data(), rescales);
+  }
   for (; hits != 0; hits &= hits - 1) {
     const auto k = static_cast<std::size_t>(std::countr_zero(hits));
     consider_contact(best, batch.other[k], batch.t[k]);
@@ -189,6 +194,18 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::take_hits(std::uint32_t hits, std::
     found |= crossing.found;
   }
   return found;
+}
+
+// The lanes of `lanes` whose neighbour (others[k]) the ball meets under their filters: the pairs
+// that pass through each other are dropped before they are considered.
+inline std::uint32_t World::Impl::meeting(std::uint32_t ball, const std::uint32_t* others,
+                                          std::uint32_t lanes) const {
+  std::uint32_t kept = 0;
+  for (std::uint32_t rest = lanes; rest != 0; rest &= rest - 1) {
+    const auto k = static_cast<std::uint32_t>(std::countr_zero(rest));
+    if (balls_meet(ball, others[k])) kept |= 1U << k;
+  }
+  return kept;
 }
 
 // The interior cell's neighbours of a movable ball: they are only named in the batch, and the

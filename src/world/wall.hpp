@@ -2,6 +2,8 @@
 // engine asks of it.
 #pragma once
 
+#include <cstdint>
+
 #include "carom/shapes.hpp"
 #include "carom/sweep.hpp"
 #include "core/arc_frame.hpp"
@@ -12,7 +14,8 @@ struct Wall {
   bool is_arc = false;
   Segment segment;
   Arc arc;
-  ArcFrame frame;  // is_arc only
+  ArcFrame frame;            // is_arc only
+  std::uint32_t filter = 0;  // its CollisionFilter's number in the world's FilterTable
 };
 
 [[nodiscard]] Wall make_segment_wall(const Segment& segment);

@@ -69,15 +69,18 @@ std::uint32_t World::Impl::slot_of(const char* function, BallId id) const {
   return *slot;
 }
 
-std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) const {
+std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except,
+                                    std::uint32_t filter) const {
   if (def.boundary == Boundary::box) {
     if (p.x - r < def.lower.x || p.x + r > def.upper.x || p.y - r < def.lower.y ||
         p.y + r > def.upper.y) {
       return "it reaches outside the box";
     }
   }
+  // A ball passes through what its filter does not meet: no overlap to refuse there.
   const auto overlaps_wall = [&](std::uint32_t w) {
-    return length_squared(detail::nearest_point(walls[w], p) - p) < r * r;
+    return (!filters.active() || filter_meets_wall(filter, w)) &&
+           length_squared(detail::nearest_point(walls[w], p) - p) < r * r;
   };
   if (!grid_valid) {
     for (std::uint32_t w = 0; w < walls.size(); ++w) {
@@ -98,6 +101,7 @@ std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except) cons
          j = grid.next_ball(static_cast<std::uint32_t>(j))) {
       const auto other = static_cast<std::uint32_t>(j);
       if (other == except) continue;
+      if (filters.active() && !filters.meet(filter, infos[other].filter)) continue;
       const Vec2 gap = minimum_image(position_at(other, time) - p);
       const double reach = r + radius_of(other);
       if (length_squared(gap) < reach * reach) {
@@ -147,7 +151,9 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-BallId World::add_ball(const BallDef& def) {
+BallId World::add_ball(const BallDef& def) { return add_ball(def, CollisionFilter{}); }
+
+BallId World::add_ball(const BallDef& def, const CollisionFilter& ball_filter) {
   constexpr const char* kFunction = "World::add_ball";
   validate_ball_def(kFunction, def);
   Impl& w = *impl_;
@@ -164,8 +170,9 @@ BallId World::add_ball(const BallDef& def) {
   // (Under growth the species take the radii of now, the new ball's among them.)
   w.settle_growth();
   w.ensure_grid(position, def.radius);
+  const std::uint32_t filter = w.filters.number_of(ball_filter);
   const std::string overlap =
-      w.overlap_at(position, def.radius, std::numeric_limits<std::uint32_t>::max());
+      w.overlap_at(position, def.radius, std::numeric_limits<std::uint32_t>::max(), filter);
   if (!overlap.empty()) {
     refuse(kFunction, "def.position", detail::vector_text(def.position),
            "the ball cannot go there: " + overlap);
@@ -189,6 +196,7 @@ BallId World::add_ball(const BallDef& def) {
     w.last_contact_times[slot] = -std::numeric_limits<double>::infinity();
   }
   info.user_data = def.user_data;
+  info.filter = filter;
   if (w.gravity_on) {
     w.carriages.resize(w.balls.size());
     w.carriages[slot] = w.free_carriage();
@@ -526,6 +534,67 @@ double World::set_temperature(double kT) {
   return kinetic_energy() - before;
 }
 
+void World::set_filter(BallId id, const CollisionFilter& filter) {
+  Impl& w = *impl_;
+  const std::uint32_t slot = w.slot_of("World::set_filter", id);
+  const std::uint32_t number = w.filters.number_of(filter);
+  if (number == w.infos[slot].filter) return;
+  w.infos[slot].filter = number;
+  // Its pending events, and its neighbours' with it, were predicted under the old filter: a new
+  // version makes theirs stale (re-predicted when they come up), and its own is predicted anew.
+  if (w.gravity_on) {
+    w.advance(slot, w.time);
+    w.disturb(slot);  // what rested on it may now fall through it
+  }
+  BallSlot& b = w.balls[slot];
+  b.position = w.position_at(slot, w.time);
+  b.local_time = w.time;
+  ++b.version;
+  w.repredict_changed(slot);
+}
+
+CollisionFilter World::filter(BallId id) const {
+  return impl_->filters[impl_->infos[impl_->slot_of("World::filter", id)].filter];
+}
+
+void World::set_wall_filter(WallId wall, const CollisionFilter& filter) {
+  Impl& w = *impl_;
+  if (wall >= w.walls.size()) {
+    refuse("World::set_wall_filter", "wall", std::to_string(wall),
+           "must be a wall of this world (" + std::to_string(w.walls.size()) + " walls)");
+  }
+  if (w.def.boundary == Boundary::box && wall < 4 && filter != CollisionFilter{}) {
+    refuse("World::set_wall_filter", "wall", std::to_string(wall),
+           "is a side of the box boundary, which keeps every ball in (no filter)");
+  }
+  const std::uint32_t number = w.filters.number_of(filter);
+  if (number == w.walls[wall].filter) return;
+  w.walls[wall].filter = number;
+  // A ball's pending wall contact names the wall without a version: every ball predicts again
+  // at the next run; a ball resting or sliding on the wall is no longer carried by it.
+  if (w.gravity_on) {
+    w.for_each_live([&](std::uint32_t slot) {
+      const detail::Carriage& carriage = w.carriages[slot];
+      for (std::uint8_t k = 0; k < carriage.supports; ++k) {
+        if (carriage.support[k] == wall) {
+          w.advance(slot, w.time);
+          w.disturb(slot);
+          break;
+        }
+      }
+    });
+  }
+  w.events_valid = false;
+}
+
+CollisionFilter World::wall_filter(WallId wall) const {
+  if (wall >= impl_->walls.size()) {
+    refuse("World::wall_filter", "wall", std::to_string(wall),
+           "must be a wall of this world (" + std::to_string(impl_->walls.size()) + " walls)");
+  }
+  return impl_->filters[impl_->walls[wall].filter];
+}
+
 void World::set_velocity(BallId id, Vec2 velocity) {
   constexpr const char* kFunction = "World::set_velocity";
   const std::uint32_t slot = impl_->slot_of(kFunction, id);
@@ -588,7 +657,7 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
     first = {true, hit.t > 0.0 ? touching : from, hit.t > 0.0 ? hit.a_at : from};
   };
   const auto sweep_ball = [&](std::uint32_t j) {
-    if (j == slot || !balls[j].alive()) return;
+    if (j == slot || !balls[j].alive() || !balls_meet(slot, j)) return;
     const Vec2 nearest = from + minimum_image(position_at(j, time) - from);
     const double reach = radius + radius_of(j);
     for (int kx = -images; kx <= images; ++kx) {
@@ -611,7 +680,9 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
   } else {
     for (std::uint32_t j = 0; j < balls.size(); ++j) sweep_ball(j);
   }
-  for (const detail::Wall& wall : walls) {
+  for (std::uint32_t w = 0; w < walls.size(); ++w) {
+    if (!meets_wall(slot, w)) continue;
+    const detail::Wall& wall = walls[w];
     const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
     if (!hit.hit) continue;
     // The contact point the query reports is the centre plus the normal times the radius; the
@@ -664,9 +735,10 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   target = w.wrap_into_cell(target);
   w.ensure_grid(target, w.radius_of(slot));
   // The swept stop point touches its obstacle, and may overlap it by a rounding: it is accepted.
-  const std::string overlap = placement == Placement::nearest_free
-                                  ? std::string{}
-                                  : w.overlap_at(target, w.radius_of(slot), slot);
+  const std::string overlap =
+      placement == Placement::nearest_free
+          ? std::string{}
+          : w.overlap_at(target, w.radius_of(slot), slot, w.infos[slot].filter);
   if (!overlap.empty()) {
     refuse(kFunction, "position", detail::vector_text(position),
            "the ball cannot go there: " + overlap);

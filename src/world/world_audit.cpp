@@ -64,6 +64,7 @@ Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) con
 Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
                                   double tolerance) const {
   const Impl& w = *this;
+  if (!w.meets_wall(i, k)) return std::nullopt;  // its filter lets it through the wall
   const double radius = w.radius_at(i, w.time);
   const double gap = length(detail::nearest_point(w.walls[k], p) - p);
   const double slack = tolerance * radius + position_rounding(p, w.balls[i].velocity, w.time);
@@ -80,6 +81,7 @@ Violation World::Impl::audit_pair(std::uint32_t i, Vec2 p, std::uint32_t j,
   // Two immovable balls pass through each other (nothing could respond; docs/engine.md,
   // "Response"): their overlap breaks no promise.
   if (!w.movable(i) && !w.movable(j)) return std::nullopt;
+  if (!w.balls_meet(i, j)) return std::nullopt;  // their filters let them through each other
   const double reach = w.radius_at(i, w.time) + w.radius_at(j, w.time);
   const Vec2 q = w.position_at(j, w.time);
   const double gap = length(w.minimum_image(q - p));

@@ -151,6 +151,10 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
   const auto consider = [&](double t, EventKind kind, std::uint32_t partner,
                             std::uint32_t partner_version) {
+    // What the filters let through is no contact.
+    if (kind == EventKind::ball_ball ? !balls_meet(ball, partner) : !meets_wall(ball, partner)) {
+      return;
+    }
     Event candidate;
     candidate.time = time + t;
     candidate.kind = kind;

@@ -50,6 +50,11 @@ void World::Impl::predict_growing(std::uint32_t ball, std::uint32_t crossed) {
   const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
   const auto consider = [&](double t, EventKind event_kind, std::uint32_t partner,
                             std::uint32_t partner_version) {
+    // What the filters let through is no contact.
+    if (event_kind == EventKind::ball_ball ? !balls_meet(ball, partner)
+                                           : !meets_wall(ball, partner)) {
+      return;
+    }
     Event candidate;
     candidate.time = time + t;
     candidate.kind = event_kind;

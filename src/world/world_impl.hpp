@@ -22,6 +22,7 @@
 #include "carriage.hpp"
 #include "core/accelerated_sweep.hpp"
 #include "event_queue.hpp"
+#include "filter_table.hpp"
 #include "grid.hpp"
 #include "huge_page_allocator.hpp"
 #include "lookahead.hpp"
@@ -66,6 +67,7 @@ struct World::Impl : detail::BallStore {
 
   WorldDef def;
   detail::SpeciesTable species;
+  detail::FilterTable filters;  // the balls' (BallInfo::filter) and walls' (Wall::filter)
   // By slot, the time of each ball's latest contact: read only by inelastic collapse prevention,
   // so kept (and sized) only when def.collapse_time > 0, saving 8 bytes a ball otherwise.
   std::vector<double> last_contact_times;
@@ -190,7 +192,20 @@ struct World::Impl : detail::BallStore {
                                                                           double reach) const;
   // The first ball or wall that a ball of radius r at p would overlap (ignoring `except`), as a
   // message; empty when the place is free.
-  [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except) const;
+  [[nodiscard]] std::string overlap_at(Vec2 p, double r, std::uint32_t except,
+                                       std::uint32_t filter = 0) const;
+  // Whether two balls, or a ball and a wall, meet under their filters (always, in a world that
+  // never set one).
+  [[nodiscard]] bool balls_meet(std::uint32_t a, std::uint32_t b) const {
+    return !filters.active() || filters.meet(infos[a].filter, infos[b].filter);
+  }
+  [[nodiscard]] bool meets_wall(std::uint32_t ball, std::uint32_t wall) const {
+    return !filters.active() || filter_meets_wall(infos[ball].filter, wall);
+  }
+  // A box boundary's sides (walls 0 to 3) meet every ball, whatever its filter: no ball leaves.
+  [[nodiscard]] bool filter_meets_wall(std::uint32_t filter, std::uint32_t wall) const {
+    return (def.boundary == Boundary::box && wall < 4) || filters.meet(filter, walls[wall].filter);
+  }
 
   // ---- audit (world_audit.cpp): a description of the first violation found, or nothing ----
   [[nodiscard]] std::optional<std::string> audit_all_pairs(double tolerance) const;
@@ -222,6 +237,7 @@ struct World::Impl : detail::BallStore {
   void load_payload(detail::ByteReader& in, std::uint32_t version);
   void load_grid(detail::ByteReader& in);
   void load_carriage(detail::ByteReader& in, std::uint32_t slot, const std::string& which);
+  void load_filters(detail::ByteReader& in);
 
   // ---- the grid's upkeep (world_grid_upkeep.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,
@@ -353,6 +369,8 @@ struct World::Impl : detail::BallStore {
                         detail::Event& best) const;
   void file_prediction(detail::Event& best, bool found);
   void consider_contact(detail::Event& best, std::uint32_t other, double t) const;
+  [[nodiscard]] std::uint32_t meeting(std::uint32_t ball, const std::uint32_t* others,
+                                      std::uint32_t lanes) const;
   // Brings one ball, or every ball, to time t (its position advanced along its velocity).
   void advance(std::uint32_t ball, double t);
   // advance's part for a world with gravity (world_gravity.cpp): the velocity is re-based too.

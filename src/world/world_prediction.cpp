@@ -155,6 +155,10 @@ void World::Impl::predict_both(std::uint32_t i, std::uint32_t j) {
   const auto solve_batch = [&]() CAROM_ALWAYS_INLINE {
     batch.solve(kFarFuture);
     found |= batch.hits != 0;
+    if (filters.active()) [[unlikely]] {
+      batch.hits = meeting(ball, batch.other.data(), batch.hits);
+      batch.rescales = meeting(ball, batch.other.data(), batch.rescales);
+    }
     for (std::uint32_t hits = batch.hits; hits != 0; hits &= hits - 1) {
       const auto k = static_cast<std::size_t>(std::countr_zero(hits));
       consider_contact(best, batch.other[k], batch.t[k]);

@@ -209,7 +209,7 @@ class QueryVisitor {
             for (const std::uint32_t id : w_.grid.walls(cell)) {
               if (wall_seen_[id] != 0) continue;
               wall_seen_[id] = 1;
-              wall(id);
+              if (sees_wall(id)) wall(id);
             }
           }
         },
@@ -220,10 +220,15 @@ class QueryVisitor {
   [[nodiscard]] bool accepts(std::uint32_t slot) const {
     const BallId id = w_.id_of(slot);
     if (id == filter_.ignore) return false;
+    if ((w_.filters[w_.infos[slot].filter].category & filter_.mask) == 0) return false;
     return !filter_.accept || filter_.accept(id);
   }
 
  private:
+  [[nodiscard]] bool sees_wall(std::uint32_t id) const {
+    return (w_.filters[w_.walls[id].filter].category & filter_.mask) != 0;
+  }
+
   // Without a grid (no ball yet, or walls added since the last run): every ball at each of its
   // periodic copies near the region, every wall.
   template <typename Ball, typename WallVisit>
@@ -251,7 +256,9 @@ class QueryVisitor {
       });
     }
     if (filter_.walls) {
-      for (std::uint32_t id = 0; id < w_.walls.size(); ++id) wall(id);
+      for (std::uint32_t id = 0; id < w_.walls.size(); ++id) {
+        if (sees_wall(id)) wall(id);
+      }
     }
   }
 

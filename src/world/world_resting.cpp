@@ -367,6 +367,7 @@ bool World::Impl::move_together(std::uint32_t i, std::uint32_t j, double t) {
            n = grid.next_ball(static_cast<std::uint32_t>(n))) {
         const auto other = static_cast<std::uint32_t>(n);
         if (std::find(group.begin(), group.end(), other) != group.end()) continue;
+        if (!balls_meet(member, other)) continue;  // it passes through: no part of the group
         const double reach = radius_of(member) + radius_of(other);
         const double gap =
             length(minimum_image(position_at(other, t) - position_at(member, t))) - reach;

@@ -36,6 +36,10 @@ constexpr char kMagic[8] = {'C', 'A', 'R', 'O', 'M', 'W', 'L', 'D'};
 constexpr std::uint32_t kVersion = 2;
 constexpr std::uint32_t kGravityVersion = 3;
 constexpr std::uint32_t kGrowthVersion = 4;
+// Added to any of them: the world has collision filters, saved after everything else (the
+// filter table, then each ball's filter number in handle order, then each wall's), so that a
+// world without filters saves exactly the bytes it always did.
+constexpr std::uint32_t kFiltersFlag = 0x100;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -83,7 +87,8 @@ std::string read_payload(const char* function, const std::string& source, std::i
             "truncated: the header needs " + std::to_string(kHeaderSize) + " bytes");
   }
   version = static_cast<std::uint32_t>(get_unsigned(header + 8, 4));
-  if (version != kVersion && version != kGravityVersion && version != kGrowthVersion) {
+  const std::uint32_t base = version & ~kFiltersFlag;
+  if (base != kVersion && base != kGravityVersion && base != kGrowthVersion) {
     damaged(function, source, "version " + std::to_string(version),
             "unsupported version (this build reads versions " + std::to_string(kVersion) + ", " +
                 std::to_string(kGravityVersion) + " and " + std::to_string(kGrowthVersion) + ")");
@@ -226,12 +231,23 @@ std::string World::Impl::save_payload() const {
       out.u32(event.partner_version);
     }
   }
+  if (filters.active()) {
+    out.u32(static_cast<std::uint32_t>(filters.size()));
+    for (const CollisionFilter& f : filters.all()) {
+      out.u64(f.category);
+      out.u64(f.mask);
+      out.i32(f.group);
+    }
+    for (const std::uint32_t i : slot_of_handle) out.u32(infos[i].filter);
+    for (const detail::Wall& wall : walls) out.u32(wall.filter);
+  }
   return out.bytes();
 }
 
 std::uint32_t World::Impl::save_version() const {
-  if (gravity_on) return kGravityVersion;
-  return growth_on ? kGrowthVersion : kVersion;
+  const std::uint32_t flags = filters.active() ? kFiltersFlag : 0U;
+  if (gravity_on) return kGravityVersion | flags;
+  return (growth_on ? kGrowthVersion : kVersion) | flags;
 }
 
 void World::save(std::ostream& out) const {
@@ -253,7 +269,8 @@ void World::save(const std::filesystem::path& path) const {
 
 // ---- reading ---------------------------------------------------------------------------------
 
-void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
+void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
+  const std::uint32_t version = flagged_version & ~kFiltersFlag;
   using carom::number_text;
   using detail::vector_text;
   const std::uint8_t boundary = in.u8("def.boundary");
@@ -456,9 +473,36 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t version) {
       queue.set(i, event);
     }
   }
+  if ((flagged_version & kFiltersFlag) != 0) load_filters(in);
   if (in.remaining() != 0) {
     in.inconsistent("payload", std::to_string(in.remaining()) + " bytes", "left over at the end");
   }
+}
+
+// The filters' section: the table (at least the default and one more), each slot's number (by
+// handle, as the slots are stored) and each wall's, every number within the table.
+void World::Impl::load_filters(ByteReader& in) {
+  const std::uint32_t count = in.u32("filter count");
+  if (count < 2 || count > in.remaining() / 20) {
+    in.inconsistent("filter count", std::to_string(count), "at least 2, and within the payload");
+  }
+  std::vector<CollisionFilter> table(count);
+  for (CollisionFilter& f : table) {
+    f.category = in.u64("filter category");
+    f.mask = in.u64("filter mask");
+    f.group = in.i32("filter group");
+  }
+  if (table.front() != CollisionFilter{}) {
+    in.inconsistent("filter 0", "-", "must be the default filter");
+  }
+  filters.assign(std::move(table));
+  const auto number = [&](const char* what) {
+    const std::uint32_t k = in.u32(what);
+    if (k >= count) in.inconsistent(what, std::to_string(k), "not a filter of the table");
+    return k;
+  };
+  for (std::uint32_t i = 0; i < balls.size(); ++i) infos[i].filter = number("ball filter");
+  for (detail::Wall& wall : walls) wall.filter = number("wall filter");
 }
 
 // A slot's carriage (version 3), checked for what it names: walls that exist, handles within the

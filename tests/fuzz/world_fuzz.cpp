@@ -1,5 +1,6 @@
 // libFuzzer target for carom::World driven by a random sequence of API calls: add and remove
-// balls, move them (refused or to the nearest free place), set velocities, step with random dt,
+// balls (some with collision filters that let pairs pass through each other), move them
+// (refused or to the nearest free place), set velocities, step with random dt,
 // run_until, run_collisions with small counts (with and without a time limit), a stop condition,
 // contact recording on and off, and a save → load round trip; in an open world, a box and a
 // periodic cell, with segments and arcs in the first two. After every call it checks:
@@ -301,13 +302,22 @@ class Harness {
       def.restitution = kRestitutions[r / 4 % std::size(kRestitutions)];
       if (*def.restitution < 1.0 && def_.collapse_time == 0.0) def.restitution = 1.0;
     }
+    // r % 4 == 2: a collision filter of one of three kinds (each meeting its own kind, one of
+    // them the default's too, one in a group that never meets itself), so that pairs pass
+    // through each other and filtered balls are placed overlapping.
+    carom::CollisionFilter filter;
+    if (r % 4 == 2) {
+      const std::uint64_t kind = std::uint64_t{1} << (r / 4 % 3);
+      filter = {kind, kind | (r / 16 % 2 == 0 ? 1U : 0U), r / 32 % 2 == 0 ? 0 : -1};
+    }
     const Snapshot before = snapshot(world());
     CAROM_TRACE("add_ball(p {%.17g, %.17g}, v {%.17g, %.17g}, r %.17g, m %.17g, e %.17g)\n",
                 def.position.x, def.position.y, def.velocity.x, def.velocity.y, def.radius,
                 def.mass, def.restitution.value_or(-1.0));
     try {
-      const BallId id = world().add_ball(def);
+      const BallId id = world().add_ball(def, filter);
       check(world().contains(id), "add_ball returned a handle the world does not contain");
+      check(world().filter(id) == filter, "add_ball lost the filter");
       check(world().radius(id) == def.radius, "add_ball lost the radius");
       if (def.restitution && *def.restitution < 1.0) elastic_ = false;
       if (def.mass == carom::kImmovable && (def.velocity.x != 0.0 || def.velocity.y != 0.0)) {
@@ -672,6 +682,13 @@ class Harness {
   void check_queries() {
     const World& w = world();
     const std::vector<BallId> ids = w.balls();
+    // The grid (the engine's and so the queries') files a ball by where it is; once the time's
+    // rounding moves a ball further than that in one step of the clock (ulp(time) × speed, an
+    // input that runs to 10¹⁷), a ball may sit cells away from where it is filed, and the
+    // queries, like prediction, no longer see it. Such worlds are not checked.
+    double fastest = 0.0;
+    for (const BallId id : ids) fastest = std::max(fastest, carom::length(w.velocity(id)));
+    if (std::abs(w.time()) * std::numeric_limits<double>::epsilon() * fastest > 1e-8) return;
     const bool periodic = def_.boundary == Boundary::periodic;
     // Every place ball `id` may be met at within `reach` of the box [lo, hi].
     const auto copies = [&](BallId id, Vec2 lo, Vec2 hi, double reach) {
@@ -762,8 +779,26 @@ class Harness {
         std::sort(list->begin(), list->end());
         list->erase(std::unique(list->begin(), list->end()), list->end());
       }
-      check(indices(w.balls_in_circle(c, around)) == in_circle, "balls_in_circle differs");
-      check(indices(w.balls_in_box(box_lo, box_hi)) == in_box, "balls_in_box differs");
+      const auto listed = [](const std::vector<std::uint32_t>& list) {
+        std::string text;
+        for (const std::uint32_t k : list) text += " " + std::to_string(k);
+        return text;
+      };
+      const std::vector<std::uint32_t> circle = indices(w.balls_in_circle(c, around));
+      if (circle != in_circle && kTrace) {
+        std::fprintf(stderr, "time %.17g centre {%.17g, %.17g} around %.17g\n", w.time(), c.x, c.y,
+                     around);
+        for (const BallId id : ids) {
+          std::fprintf(stderr, "  ball %u at {%.17g, %.17g} v {%.17g, %.17g} r %.17g\n", id.index,
+                       w.position(id).x, w.position(id).y, w.velocity(id).x, w.velocity(id).y,
+                       w.radius(id));
+        }
+      }
+      check(circle == in_circle,
+            "balls_in_circle differs:", listed(circle) + " against the scan's" + listed(in_circle));
+      const std::vector<std::uint32_t> box = indices(w.balls_in_box(box_lo, box_hi));
+      check(box == in_box,
+            "balls_in_box differs:", listed(box) + " against the scan's" + listed(in_box));
     }
   }
 

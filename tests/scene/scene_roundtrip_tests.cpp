@@ -254,5 +254,31 @@ TEST(SceneRoundTrip, SceneWithoutGravityWritesNoGravityKey) {
   }
 }
 
+TEST(SceneRoundTrip, BallFiltersReadBackAndBuildIntoTheWorld) {
+  const Scene scene = parse_scene(
+      R"({"balls": [{"position": [0, 0], "velocity": [1, 0], "radius": 0.5,
+                     "filter": {"category": 2, "mask": 18446744073709551613, "group": -7}},
+                    {"position": [0.2, 0], "radius": 0.5, "filter": {"group": -7}},
+                    {"position": [5, 0], "radius": 0.5}]})",
+      "filters");
+  ASSERT_EQ(scene.balls.size(), 3u);
+  EXPECT_EQ(scene.balls[0].filter, (CollisionFilter{2, 18446744073709551613ULL, -7}));
+  EXPECT_EQ(scene.balls[1].filter, (CollisionFilter{1, ~0ULL, -7}));
+  EXPECT_EQ(scene.balls[2].filter, CollisionFilter{});
+  const std::string text = to_json_text(scene);
+  EXPECT_EQ(to_json_text(parse_scene(text, "again")), text);
+  EXPECT_EQ(text.find("\"filter\"", text.rfind("[5.0")), std::string::npos);  // default: none
+  // The first two overlap, allowed by their group; the world keeps their filters.
+  SceneWorld built = make_world(scene);
+  EXPECT_EQ(built.world.filter(built.balls[0]), scene.balls[0].filter);
+  EXPECT_EQ(built.world.audit(), std::nullopt);
+  EXPECT_THROW(static_cast<void>(parse_scene(R"({"balls": [{"position": [0, 0],
+                                    "filter": {"group": 1.5}}]})")),
+               SceneError);
+  EXPECT_THROW(static_cast<void>(parse_scene(R"({"balls": [{"position": [0, 0],
+                                    "filter": {"colour": 1}}]})")),
+               SceneError);
+}
+
 }  // namespace
 }  // namespace carom

@@ -10,8 +10,8 @@
 namespace carom {
 
 struct CollisionFilter {
-  std::uint64_t category = 1;        // what this one is: one bit or several
-  std::uint64_t mask = ~0ULL;        // the categories it meets
+  std::uint64_t category = 1;  // what this one is: one bit or several
+  std::uint64_t mask = ~0ULL;  // the categories it meets
   // A group other than 0 overrides the bits between members of one group: a positive group's
   // members always meet, a negative group's never (a ragdoll's parts, a chain's links).
   std::int32_t group = 0;

@@ -82,6 +82,7 @@ struct SceneBall {
 struct ScenePolyline {
   std::vector<Vec2> points;  // at least 2
   bool closed = false;       // join the last point back to the first
+  CollisionFilter filter;    // of each of its segments ("filter" in JSON)
 };
 
 // A pocket: a circle that swallows any ball that touches it. Built as an immovable ball; a ball
@@ -154,6 +155,10 @@ struct Scene {
   std::vector<Segment> segments;
   std::vector<ScenePolyline> polylines;
   std::vector<Arc> arcs;
+  // The collision filters of the segments and arcs, by index ("filter" in JSON): empty when
+  // every one has the default, else one for each.
+  std::vector<CollisionFilter> segment_filters;
+  std::vector<CollisionFilter> arc_filters;
   std::vector<ScenePocket> pockets;
   std::vector<SceneGenerator> generators;
   std::optional<SceneThermostat> thermostat;  // none: the runs keep the energy they have

@@ -133,9 +133,9 @@ void check_walls(const Scene& scene, const std::vector<SceneBall>& balls, const 
   const std::vector<SceneWall> walls = scene_walls(scene);
   if (walls.empty()) return;
   for (std::size_t i = 0; i < balls.size(); ++i) {
-    // A scene's walls have the default filter: a ball whose filter does not meet it passes.
-    if (!should_collide(balls[i].filter, CollisionFilter{})) continue;
     for (const SceneWall& wall : walls) {
+      // A ball passes through a wall whose filter it does not meet.
+      if (!should_collide(balls[i].filter, wall.filter)) continue;
       const double gap = distance_to_wall(wall, balls[i].position) - balls[i].radius;
       if (gap < -kRoundingOverlap * balls[i].radius) {
         const BallOrigin o = origins.of(i, balls);

@@ -14,7 +14,9 @@ namespace carom::scene_detail {
 std::vector<SceneWall> scene_walls(const Scene& scene) {
   std::vector<SceneWall> walls;
   for (std::size_t i = 0; i < scene.segments.size(); ++i) {
-    walls.push_back({scene.segments[i], {std::string("segments"), i}});
+    walls.push_back({scene.segments[i],
+                     {std::string("segments"), i},
+                     scene.segment_filters.empty() ? CollisionFilter{} : scene.segment_filters[i]});
   }
   for (std::size_t i = 0; i < scene.polylines.size(); ++i) {
     const ScenePolyline& polyline = scene.polylines[i];
@@ -22,11 +24,14 @@ std::vector<SceneWall> scene_walls(const Scene& scene) {
     const std::size_t count = polyline.closed ? n : n - 1;
     for (std::size_t k = 0; k < count; ++k) {
       walls.push_back({Segment{polyline.points[k], polyline.points[(k + 1) % n]},
-                       {std::string("polylines"), i, std::string("points"), k}});
+                       {std::string("polylines"), i, std::string("points"), k},
+                       polyline.filter});
     }
   }
   for (std::size_t i = 0; i < scene.arcs.size(); ++i) {
-    walls.push_back({scene.arcs[i], {std::string("arcs"), i}});
+    walls.push_back({scene.arcs[i],
+                     {std::string("arcs"), i},
+                     scene.arc_filters.empty() ? CollisionFilter{} : scene.arc_filters[i]});
   }
   return walls;
 }

@@ -16,6 +16,7 @@ namespace carom::scene_detail {
 struct SceneWall {
   std::variant<Segment, Arc> shape;
   JsonPath path;
+  CollisionFilter filter;
 };
 
 // Segments, then each polyline's segments, then arcs: the order make_world adds them in.

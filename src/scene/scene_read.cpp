@@ -166,15 +166,18 @@ SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const 
   return ball;
 }
 
-Segment read_segment(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
-  const ObjectFields f(source, json, path, {"a", "b"});
+Segment read_segment(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
+                     std::vector<CollisionFilter>& filters) {
+  const ObjectFields f(source, json, path, {"a", "b", "filter"});
+  filters.push_back(read_filter(f));
   return {f.vector("a"), f.vector("b")};
 }
 
 ScenePolyline read_polyline(const JsonSource& source, const nlohmann::json& json,
                             const JsonPath& path) {
-  const ObjectFields f(source, json, path, {"points", "closed"});
+  const ObjectFields f(source, json, path, {"points", "closed", "filter"});
   ScenePolyline polyline;
+  polyline.filter = read_filter(f);
   const nlohmann::json& points = f.at("points");
   if (!points.is_array() || points.size() < 2) {
     f.fail("points", "must be an array of at least two points [x, y]");
@@ -187,8 +190,11 @@ ScenePolyline read_polyline(const JsonSource& source, const nlohmann::json& json
   return polyline;
 }
 
-Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
-  const ObjectFields f(source, json, path, {"center", "radius", "start_angle", "end_angle"});
+Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
+             std::vector<CollisionFilter>& filters) {
+  const ObjectFields f(source, json, path,
+                       {"center", "radius", "start_angle", "end_angle", "filter"});
+  filters.push_back(read_filter(f));
   Arc arc;
   arc.center = f.vector("center");
   arc.radius = positive(f, "radius", 1.0);
@@ -352,9 +358,22 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   scene.world = read_settings(top);
   scene.time = top.number_or("time", 0.0);
   read_array(top, "balls", scene.balls, read_ball);
-  read_array(top, "segments", scene.segments, read_segment);
+  read_array(top, "segments", scene.segments,
+             [&scene](const JsonSource& text, const nlohmann::json& item, const JsonPath& at) {
+               return read_segment(text, item, at, scene.segment_filters);
+             });
   read_array(top, "polylines", scene.polylines, read_polyline);
-  read_array(top, "arcs", scene.arcs, read_arc);
+  read_array(top, "arcs", scene.arcs,
+             [&scene](const JsonSource& text, const nlohmann::json& item, const JsonPath& at) {
+               return read_arc(text, item, at, scene.arc_filters);
+             });
+  // Every wall with the default filter: none kept (Scene's rule).
+  const auto all_default = [](const std::vector<CollisionFilter>& filters) {
+    return std::all_of(filters.begin(), filters.end(),
+                       [](const CollisionFilter& f) { return f == CollisionFilter{}; });
+  };
+  if (all_default(scene.segment_filters)) scene.segment_filters.clear();
+  if (all_default(scene.arc_filters)) scene.arc_filters.clear();
   read_array(top, "pockets", scene.pockets, read_pocket);
   read_array(top, "generators", scene.generators, read_generator);
   scene.thermostat = read_thermostat(top);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "carom/error.hpp"
@@ -83,11 +84,30 @@ SceneWorld make_world(const Scene& scene) {
   sw.start_time = scene.time;
 
   try {
-    for (const Segment& segment : scene.segments) static_cast<void>(sw.world.add_segment(segment));
-    for (const ScenePolyline& polyline : scene.polylines) {
-      static_cast<void>(sw.world.add_polyline(polyline.points, polyline.closed));
+    // (A Scene made in C++ may hold filters of other counts than its walls.)
+    for (const auto& [filters, count, name] :
+         {std::tuple{&scene.segment_filters, scene.segments.size(), "scene.segment_filters"},
+          std::tuple{&scene.arc_filters, scene.arcs.size(), "scene.arc_filters"}}) {
+      if (!filters->empty() && filters->size() != count) {
+        throw InvalidArgument("make_world", name, std::to_string(filters->size()) + " filters",
+                              "must be empty or one for each (" + std::to_string(count) + ")");
+      }
     }
-    for (const Arc& arc : scene.arcs) static_cast<void>(sw.world.add_arc(arc));
+    // Each wall's filter before any ball, so that placing balls honours it.
+    for (std::size_t i = 0; i < scene.segments.size(); ++i) {
+      const WallId wall = sw.world.add_segment(scene.segments[i]);
+      if (!scene.segment_filters.empty()) sw.world.set_wall_filter(wall, scene.segment_filters[i]);
+    }
+    for (const ScenePolyline& polyline : scene.polylines) {
+      const WallId first = sw.world.add_polyline(polyline.points, polyline.closed);
+      for (WallId wall = first; wall < sw.world.wall_count(); ++wall) {
+        sw.world.set_wall_filter(wall, polyline.filter);
+      }
+    }
+    for (std::size_t i = 0; i < scene.arcs.size(); ++i) {
+      const WallId wall = sw.world.add_arc(scene.arcs[i]);
+      if (!scene.arc_filters.empty()) sw.world.set_wall_filter(wall, scene.arc_filters[i]);
+    }
   } catch (const InvalidArgument& error) {
     throw world_refused("segments", error);
   }

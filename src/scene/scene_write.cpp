@@ -54,6 +54,17 @@ std::string boundary_text(Boundary boundary) {
   }
 }
 
+// A non-default filter as "filter": {its non-default fields}; nothing for the default.
+void add_filter(Line& line, const CollisionFilter& f) {
+  if (f == CollisionFilter{}) return;
+  Line filter;
+  const CollisionFilter defaults;
+  if (f.category != defaults.category) filter.add("category", std::to_string(f.category));
+  if (f.mask != defaults.mask) filter.add("mask", std::to_string(f.mask));
+  if (f.group != defaults.group) filter.add("group", std::to_string(f.group));
+  line.add("filter", filter.done());
+}
+
 std::string ball_line(const SceneBall& b) {
   Line line;
   if (b.name) line.add("name", str(*b.name));
@@ -61,15 +72,7 @@ std::string ball_line(const SceneBall& b) {
   line.add("radius", num(b.radius)).add("mass", num(b.mass));
   if (b.restitution) line.add("restitution", num(*b.restitution));
   if (b.color) line.add("color", str(*b.color));
-  if (b.filter != CollisionFilter{}) {
-    Line filter;
-    const CollisionFilter defaults;
-    if (b.filter.category != defaults.category)
-      filter.add("category", std::to_string(b.filter.category));
-    if (b.filter.mask != defaults.mask) filter.add("mask", std::to_string(b.filter.mask));
-    if (b.filter.group != defaults.group) filter.add("group", std::to_string(b.filter.group));
-    line.add("filter", filter.done());
-  }
+  add_filter(line, b.filter);
   return line.done();
 }
 
@@ -78,7 +81,10 @@ std::string polyline_line(const ScenePolyline& p) {
   for (std::size_t i = 0; i < p.points.size(); ++i) {
     points += (i == 0 ? "" : ", ") + vec(p.points[i]);
   }
-  return Line().add("points", points + "]").add("closed", p.closed ? "true" : "false").done();
+  Line line;
+  line.add("points", points + "]").add("closed", p.closed ? "true" : "false");
+  add_filter(line, p.filter);
+  return line.done();
 }
 
 std::string velocities_line(const SceneVelocities& v) {
@@ -154,16 +160,25 @@ std::string to_json_text(const Scene& scene) {
   out += ",\n  \"world\": " + world.done();
   out += ",\n  \"time\": " + num(scene.time);
   write_array(out, "balls", scene.balls, ball_line);
-  write_array(out, "segments", scene.segments,
-              [](const Segment& s) { return Line().add("a", vec(s.a)).add("b", vec(s.b)).done(); });
+  std::size_t segment = 0;
+  write_array(out, "segments", scene.segments, [&](const Segment& s) {
+    Line line;
+    line.add("a", vec(s.a)).add("b", vec(s.b));
+    if (!scene.segment_filters.empty()) add_filter(line, scene.segment_filters[segment]);
+    ++segment;
+    return line.done();
+  });
   write_array(out, "polylines", scene.polylines, polyline_line);
-  write_array(out, "arcs", scene.arcs, [](const Arc& a) {
-    return Line()
-        .add("center", vec(a.center))
+  std::size_t arc = 0;
+  write_array(out, "arcs", scene.arcs, [&](const Arc& a) {
+    Line line;
+    line.add("center", vec(a.center))
         .add("radius", num(a.radius))
         .add("start_angle", num(a.start_angle))
-        .add("end_angle", num(a.end_angle))
-        .done();
+        .add("end_angle", num(a.end_angle));
+    if (!scene.arc_filters.empty()) add_filter(line, scene.arc_filters[arc]);
+    ++arc;
+    return line.done();
   });
   write_array(out, "pockets", scene.pockets, [](const ScenePocket& p) {
     Line line;

@@ -275,6 +275,31 @@ TEST(SceneRoundTrip, BallFiltersReadBackAndBuildIntoTheWorld) {
   EXPECT_THROW(static_cast<void>(parse_scene(R"({"balls": [{"position": [0, 0],
                                     "filter": {"group": 1.5}}]})")),
                SceneError);
+  // Walls: a segment, a polyline and an arc with filters; the ball of category 2 lies across
+  // the segment that lets it through, and is refused across the one that does not.
+  const Scene walls = parse_scene(
+      R"({"segments": [{"a": [0, -5], "b": [0, 5], "filter": {"category": 4, "mask": 5}},
+                       {"a": [20, -5], "b": [20, 5]}],
+          "polylines": [{"points": [[30, 0], [31, 0], [32, 1]], "filter": {"group": 2}}],
+          "arcs": [{"center": [50, 0], "radius": 3, "start_angle": 0, "end_angle": 3,
+                    "filter": {"mask": 1}}],
+          "balls": [{"position": [0, 0], "radius": 0.5, "filter": {"category": 2, "mask": 2}}]})",
+      "walls");
+  EXPECT_EQ(walls.segment_filters.size(), 2u);
+  EXPECT_EQ(walls.segment_filters[0], (CollisionFilter{4, 5, 0}));
+  EXPECT_EQ(walls.segment_filters[1], CollisionFilter{});
+  EXPECT_EQ(walls.polylines[0].filter.group, 2);
+  EXPECT_EQ(walls.arc_filters.size(), 1u);
+  const std::string wall_text = to_json_text(walls);
+  EXPECT_EQ(to_json_text(parse_scene(wall_text, "again")), wall_text);
+  SceneWorld walled = make_world(walls);
+  EXPECT_EQ(walled.world.wall_filter(0), (CollisionFilter{4, 5, 0}));
+  EXPECT_EQ(walled.world.wall_filter(3).group, 2);  // the polyline's second segment
+  EXPECT_EQ(walled.world.wall_filter(4), (CollisionFilter{1, 1, 0}));
+  EXPECT_THROW(static_cast<void>(parse_scene(
+                   R"({"segments": [{"a": [0, -5], "b": [0, 5]}],
+                       "balls": [{"position": [0, 0], "radius": 0.5}]})")),
+               SceneError);
   EXPECT_THROW(static_cast<void>(parse_scene(R"({"balls": [{"position": [0, 0],
                                     "filter": {"colour": 1}}]})")),
                SceneError);

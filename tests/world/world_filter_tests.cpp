@@ -35,7 +35,8 @@ World two_kinds(const CollisionFilter& even, const CollisionFilter& odd, bool wi
   int k = 0;
   for (int row = 0; row < 14; ++row) {
     for (int column = 0; column < 14; ++column, ++k) {
-      const BallDef def = ball({1.5 + column * 2.7, 1.5 + row * 2.7}, {speed(engine), speed(engine)});
+      const BallDef def =
+          ball({1.5 + column * 2.7, 1.5 + row * 2.7}, {speed(engine), speed(engine)});
       if (k % 2 == 0) {
         world.add_ball(def, even);
       } else if (with_odd) {
@@ -124,7 +125,7 @@ TEST(WorldFilter, AWallLetsThroughWhatItsFilterDoesNotMeet) {
   const BallId solid = world.add_ball(ball({0.0, 3.0}, {1.0, 0.0}), {1 | 2, ~0ULL, 0});
   world.run_until(10.0);
   EXPECT_EQ(world.position(ghost), (Vec2{10.0, 0.0}));  // straight through
-  EXPECT_LT(world.position(solid).x, 5.0);               // bounced back
+  EXPECT_LT(world.position(solid).x, 5.0);              // bounced back
   EXPECT_EQ(world.wall_filter(gate), only(2));
   // A box's own sides keep every ball in: no filter for them.
   World box(WorldDef{Boundary::box, {0.0, 0.0}, {10.0, 10.0}});
@@ -181,7 +182,7 @@ TEST(WorldFilter, UnderGravityABallFallsThroughWhatItDoesNotMeetAndRestsOnWhatIt
   def.gravity = {0.0, -9.81};
   World world(def);
   world.set_wall_filter(world.add_segment({{0.0, 10.0}, {10.0, 10.0}}), only(2));  // a shelf
-  const BallId below = world.add_ball(ball({5.0, 0.5}, {}), {1, 1, -1});  // its group: never meet
+  const BallId below = world.add_ball(ball({5.0, 0.5}, {}), {1, 1, -1});   // its group: never meet
   const BallId ghost = world.add_ball(ball({5.0, 15.0}, {}), {1, 1, -1});  // meets the floor only
   const BallId solid = world.add_ball(ball({2.0, 15.0}, {}), {2, ~0ULL, 0});
   world.run_until(20.0);

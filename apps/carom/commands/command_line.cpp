@@ -19,6 +19,7 @@
 #include "commands/gas_command.hpp"
 #include "commands/info_command.hpp"
 #include "commands/pack_command.hpp"
+#include "commands/query_command.hpp"
 #include "commands/render_command.hpp"
 #include "commands/run_command.hpp"
 #include "commands/sweep_command.hpp"
@@ -104,10 +105,11 @@ int parse_and_run(int argc, char** argv) {
       "Example scenes (examples/ in the verbs' help): " +
       carom::cli::examples_folder());
   const std::vector<carom::cli::Command> commands{
-      carom::cli::add_sweep_command(app),  carom::cli::add_bench_command(app),
-      carom::cli::add_gas_command(app),    carom::cli::add_eos_command(app),
-      carom::cli::add_run_command(app),    carom::cli::add_info_command(app),
-      carom::cli::add_render_command(app), carom::cli::add_pack_command(app)};
+      carom::cli::add_sweep_command(app), carom::cli::add_bench_command(app),
+      carom::cli::add_gas_command(app),   carom::cli::add_eos_command(app),
+      carom::cli::add_run_command(app),   carom::cli::add_info_command(app),
+      carom::cli::add_query_command(app), carom::cli::add_render_command(app),
+      carom::cli::add_pack_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -56,7 +56,7 @@ TEST(QueryCommand, EveryHitOfARayInOrderAndOverlapQueries) {
     EXPECT_LE(hits[k - 1]["fraction"].get<double>(), hits[k]["fraction"].get<double>());
   }
   EXPECT_EQ(out["results"][1]["answer"], json::array({"pocket 0"}));  // the corner pocket
-  EXPECT_GE(out["results"][2]["answer"].size(), 3u);                // the rack's front
+  EXPECT_GE(out["results"][2]["answer"].size(), 3u);                  // the rack's front
   EXPECT_EQ(out["time"], 0.0);
 }
 

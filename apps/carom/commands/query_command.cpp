@@ -62,7 +62,7 @@ nlohmann::ordered_json hit_json(const SceneWorld& sw, const QueryHit& hit) {
     out["kind"] = "ball";
     out["ball"] = *index;
     out["name"] = sw.scene.balls[*index].name ? nlohmann::ordered_json(*sw.scene.balls[*index].name)
-                                               : nullptr;
+                                              : nullptr;
   } else {
     out["kind"] = "pocket";
     out["pocket"] = pocket_of(sw, hit.ball);
@@ -92,7 +92,8 @@ std::string hit_text(const nlohmann::ordered_json& hit) {
   what += hit["kind"] == "wall"   ? std::to_string(hit["wall"].get<std::uint32_t>())
           : hit["kind"] == "ball" ? std::to_string(hit["ball"].get<std::size_t>())
                                   : std::to_string(hit["pocket"].get<std::size_t>());
-  if (hit.contains("name") && hit["name"].is_string()) what += " \"" + hit["name"].get<std::string>() + "\"";
+  if (hit.contains("name") && hit["name"].is_string())
+    what += " \"" + hit["name"].get<std::string>() + "\"";
   return what + " at fraction " + readable(hit["fraction"].get<double>()) + ", point (" +
          readable(hit["point"][0].get<double>()) + ", " + readable(hit["point"][1].get<double>()) +
          "), centre (" + readable(hit["center"][0].get<double>()) + ", " +

@@ -39,7 +39,10 @@ auto answer(const QueryFilter& filter, Query query) {
   return query();
 }
 
-py::object hit_or_none(const QueryHit& hit) { return hit ? py::cast(hit) : py::none(); }
+// None when nothing is met (typed Optional[QueryHit] in the stubs).
+std::optional<QueryHit> hit_or_none(const QueryHit& hit) {
+  return hit ? std::optional<QueryHit>(hit) : std::nullopt;
+}
 
 py::array_t<std::uint64_t> id_array(const std::vector<BallId>& ids) {
   py::array_t<std::uint64_t> out(static_cast<py::ssize_t>(ids.size()));

@@ -1,10 +1,10 @@
 // The world's queries (carom/world_query.hpp): ray casts, ball casts and overlap queries, answered
-// from the grid. A ball whose centre lies within `margin` of what is asked about is filed in a
-// grid cell within that margin (plus a cell, which covers the hysteresis and a rounding), so a
-// query visits the cells its region, grown by the margin, covers — clamped at an open world's
-// edges, where the outer cells hold every ball beyond them, and unwrapped in a periodic one,
-// where each copy of a cell brings its balls shifted by whole periods. docs/queries.md says why
-// this misses nothing.
+// from the grid. A ball that can be met has its centre within the query's reach plus its radius
+// of what is asked about, and lies in its cell grown by the grid's hysteresis, so a query visits
+// the cells its region, grown by that margin (and a millionth of a cell), covers — clamped at an
+// open world's edges, where the outer cells hold every ball beyond them, and unwrapped in a
+// periodic one, where each copy of a cell brings its balls shifted by whole periods.
+// docs/queries.md says why this misses nothing.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

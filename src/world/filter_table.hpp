@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -17,12 +19,14 @@ class FilterTable {
   // The number of `filter`, added if new (filters are few: a game has a handful of kinds).
   std::uint32_t number_of(const CollisionFilter& filter) {
     if (filter == CollisionFilter{}) return 0;
-    for (std::uint32_t k = 1; k < filters_.size(); ++k) {
-      if (filters_[k] == filter) return k;
+    // (By a map: a game may give every ragdoll a group of its own, thousands of filters.)
+    const auto [at, added] =
+        numbers_.try_emplace(key(filter), static_cast<std::uint32_t>(filters_.size()));
+    if (added) {
+      filters_.push_back(filter);
+      active_ = true;
     }
-    filters_.push_back(filter);
-    active_ = true;
-    return static_cast<std::uint32_t>(filters_.size() - 1);
+    return at->second;
   }
   [[nodiscard]] const CollisionFilter& operator[](std::uint32_t number) const {
     return filters_[number];
@@ -36,12 +40,18 @@ class FilterTable {
   void assign(std::vector<CollisionFilter> filters) {
     filters_ = std::move(filters);
     if (filters_.empty()) filters_.push_back({});
+    numbers_.clear();
+    for (std::uint32_t k = 1; k < filters_.size(); ++k) numbers_.try_emplace(key(filters_[k]), k);
     active_ = filters_.size() > 1;
   }
   [[nodiscard]] const std::vector<CollisionFilter>& all() const { return filters_; }
 
  private:
+  using Key = std::tuple<std::uint64_t, std::uint64_t, std::int32_t>;
+  static Key key(const CollisionFilter& f) { return {f.category, f.mask, f.group}; }
+
   std::vector<CollisionFilter> filters_{CollisionFilter{}};
+  std::map<Key, std::uint32_t> numbers_;
   bool active_ = false;
 };
 

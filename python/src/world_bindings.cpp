@@ -237,7 +237,7 @@ py::array_t<std::uint64_t> add_balls(PyWorld& self, const DoubleArray& positions
                                      const py::object& radii, const py::object& masses,
                                      const py::object& restitution,
                                      const std::optional<py::array_t<std::uint64_t>>& user_data,
-                                     const CollisionFilter& filter) {
+                                     const py::object& filter) {
   require_points(positions, "positions", -1);
   const py::ssize_t n = positions.shape(0);
   if (velocities) require_points(*velocities, "velocities", n);
@@ -247,6 +247,24 @@ py::array_t<std::uint64_t> add_balls(PyWorld& self, const DoubleArray& positions
   if (!restitution.is_none()) e = per_ball(restitution, n, "restitution");
   if (user_data && (user_data->ndim() != 1 || user_data->shape(0) != n)) {
     throw py::value_error("user_data must be an array of shape (" + std::to_string(n) + ",)");
+  }
+  // One CollisionFilter for every ball, or a sequence of N of them.
+  std::vector<CollisionFilter> filters;
+  if (filter.is_none()) {
+    filters.assign(1, CollisionFilter{});
+  } else if (py::isinstance<CollisionFilter>(filter)) {
+    filters.assign(1, filter.cast<CollisionFilter>());
+  } else {
+    try {
+      filters = filter.cast<std::vector<CollisionFilter>>();
+    } catch (const py::cast_error&) {
+      throw py::type_error("filter must be a CollisionFilter or a sequence of them, not " +
+                           std::string(py::str(py::type::of(filter).attr("__name__"))));
+    }
+    if (static_cast<py::ssize_t>(filters.size()) != n) {
+      throw py::value_error("filter must be a CollisionFilter or a sequence of " +
+                            std::to_string(n) + " of them");
+    }
   }
   const auto p = positions.unchecked<2>();
   py::array_t<std::uint64_t> ids(n);
@@ -266,7 +284,7 @@ py::array_t<std::uint64_t> add_balls(PyWorld& self, const DoubleArray& positions
     // NaN in an array of restitutions leaves that ball's unset (the world's).
     if (!e.empty() && !std::isnan(e[k])) def.restitution = e[k];
     if (user_data) def.user_data = user_data->at(i);
-    out(i) = id_number(world.add_ball(def, filter));
+    out(i) = id_number(world.add_ball(def, filters[filters.size() == 1 ? 0 : k]));
   }
   return ids;
 }
@@ -414,10 +432,10 @@ void bind_world(py::module_& m) {
           "Adds one ball (restitution None: the world's); returns its id")
       .def("add_balls", &add_balls, py::arg("positions"), py::arg("velocities") = py::none(),
            py::arg("radii") = 1.0, py::arg("masses") = 1.0, py::arg("restitution") = py::none(),
-           py::arg("user_data") = py::none(), py::arg("filter") = CollisionFilter{},
+           py::arg("user_data") = py::none(), py::arg("filter") = py::none(),
            "Adds N balls from arrays (positions (N, 2); velocities (N, 2); radii, masses, "
            "restitution each a number or (N,); NaN restitution: the world's; filter: one "
-           "CollisionFilter for all); returns their ids")
+           "CollisionFilter for all, or a sequence of N); returns their ids")
       .def(
           "remove_ball", [](PyWorld& w, std::uint64_t id) { w.world().remove_ball(id_of(id)); },
           py::arg("id"), "Removes a ball; its id becomes stale (InvalidArgument after)")

@@ -127,3 +127,16 @@ def test_collision_filters_let_kinds_pass_through_and_queries_see_by_mask():
     wall = world.add_segment((0, -5), (0, 5))
     world.set_wall_filter(wall, blue)
     assert world.wall_filter(wall) == blue
+
+
+def test_add_balls_takes_a_filter_for_each_ball():
+    world = carom.World()
+    kinds = [carom.CollisionFilter(category=1 << (k % 2), mask=1 << (k % 2)) for k in range(4)]
+    ids = world.add_balls(np.array([[0.0, 0.0], [0.3, 0.0], [5.0, 0.0], [5.3, 0.0]]), radii=0.5,
+                          filter=kinds)  # overlapping pairs of two kinds that pass through
+    assert [world.filter(i) for i in ids] == kinds
+    assert world.audit() is None
+    with pytest.raises(ValueError, match="sequence of 2"):
+        world.add_balls(np.array([[20.0, 0.0], [30.0, 0.0]]), filter=kinds)
+    with pytest.raises(TypeError, match="not int"):
+        world.add_balls(np.array([[20.0, 0.0]]), filter=3)

@@ -151,17 +151,7 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
   const auto consider = [&](double t, EventKind kind, std::uint32_t partner,
                             std::uint32_t partner_version) {
-    // What the filters let through is no contact.
-    if (kind == EventKind::ball_ball ? !balls_meet(ball, partner) : !meets_wall(ball, partner)) {
-      return;
-    }
-    Event candidate;
-    candidate.time = time + t;
-    candidate.kind = kind;
-    candidate.owner = ball;
-    candidate.partner = partner;
-    candidate.partner_version = partner_version;
-    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
+    consider_event(best, ball, t, kind, partner, partner_version);
   };
 
   const detail::Species& kind = species[b.species];

@@ -50,18 +50,7 @@ void World::Impl::predict_growing(std::uint32_t ball, std::uint32_t crossed) {
   const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
   const auto consider = [&](double t, EventKind event_kind, std::uint32_t partner,
                             std::uint32_t partner_version) {
-    // What the filters let through is no contact.
-    if (event_kind == EventKind::ball_ball ? !balls_meet(ball, partner)
-                                           : !meets_wall(ball, partner)) {
-      return;
-    }
-    Event candidate;
-    candidate.time = time + t;
-    candidate.kind = event_kind;
-    candidate.owner = ball;
-    candidate.partner = partner;
-    candidate.partner_version = partner_version;
-    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
+    consider_event(best, ball, t, event_kind, partner, partner_version);
   };
 
   const Motion motion{v, {}, growth};

@@ -202,6 +202,23 @@ struct World::Impl : detail::BallStore {
   [[nodiscard]] bool meets_wall(std::uint32_t ball, std::uint32_t wall) const {
     return !filters.active() || filter_meets_wall(infos[ball].filter, wall);
   }
+  // Keeps in `best` the earlier of it and ball's contact of `kind` with `partner` at t from now,
+  // unless their filters let them through: how the general predictions (gravity, growth) take a
+  // contact.
+  void consider_event(detail::Event& best, std::uint32_t ball, double t, detail::EventKind kind,
+                      std::uint32_t partner, std::uint32_t partner_version) const {
+    if (kind == detail::EventKind::ball_ball ? !balls_meet(ball, partner)
+                                             : !meets_wall(ball, partner)) {
+      return;
+    }
+    detail::Event candidate;
+    candidate.time = time + t;
+    candidate.kind = kind;
+    candidate.owner = ball;
+    candidate.partner = partner;
+    candidate.partner_version = partner_version;
+    if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
+  }
   // A box boundary's sides (walls 0 to 3) meet every ball, whatever its filter: no ball leaves.
   [[nodiscard]] bool filter_meets_wall(std::uint32_t filter, std::uint32_t wall) const {
     return (def.boundary == Boundary::box && wall < 4) || filters.meet(filter, walls[wall].filter);

@@ -53,19 +53,9 @@ class QueryWalk {
   template <typename Visit, typename Done>
   void along(Vec2 a, Vec2 d, Visit&& visit, Done&& done) {
     const detail::Grid& grid = w_.grid;
-    const Vec2 cell = grid.cell_size();
-    const double step = std::min(cell.x, cell.y);
     const double length = carom::length(d);
     if (w_.def.boundary == Boundary::periodic) {
-      const double pieces = std::ceil(length / step);
-      const auto count = static_cast<std::int64_t>(std::max(pieces, 1.0));
-      for (std::int64_t k = 0; k < count; ++k) {
-        const double s0 = static_cast<double>(k) / static_cast<double>(count);
-        const double s1 =
-            k + 1 == count ? 1.0 : static_cast<double>(k + 1) / static_cast<double>(count);
-        piece(a + d * s0, a + d * s1, visit);
-        if (done(s1)) return;
-      }
+      static_cast<void>(cell_pieces(a, d, 0.0, 1.0, length, visit, done));
       return;
     }
     // An open world's or a box's grid covers a rectangle; beyond it, each part of the segment
@@ -82,16 +72,7 @@ class QueryWalk {
       piece(a, a + d * s_in, visit);
       if (done(s_in)) return;
     }
-    const double inside = (s_out - s_in) * length;
-    const auto count = static_cast<std::int64_t>(std::max(std::ceil(inside / step), 1.0));
-    for (std::int64_t k = 0; k < count; ++k) {
-      const double s0 = s_in + (s_out - s_in) * static_cast<double>(k) / static_cast<double>(count);
-      const double s1 = k + 1 == count ? s_out
-                                       : s_in + (s_out - s_in) * static_cast<double>(k + 1) /
-                                                    static_cast<double>(count);
-      piece(a + d * s0, a + d * s1, visit);
-      if (done(s1)) return;
-    }
+    if (cell_pieces(a, d, s_in, s_out, length, visit, done)) return;
     if (s_out < 1.0) {
       piece(a + d * s_out, a + d, visit);
       static_cast<void>(done(1.0));
@@ -99,6 +80,26 @@ class QueryWalk {
   }
 
  private:
+  // The part of the segment from fractions `from` to `to`, in pieces at most a cell long; true
+  // once done() says to stop.
+  template <typename Visit, typename Done>
+  bool cell_pieces(Vec2 a, Vec2 d, double from, double to, double length, Visit& visit,
+                   Done& done) {
+    const Vec2 cell = w_.grid.cell_size();
+    const double step = std::min(cell.x, cell.y);
+    const double span = to - from;
+    const auto count = static_cast<std::int64_t>(std::max(std::ceil(span * length / step), 1.0));
+    for (std::int64_t k = 0; k < count; ++k) {
+      const double s0 = from + span * static_cast<double>(k) / static_cast<double>(count);
+      const double s1 = k + 1 == count
+                            ? to
+                            : from + span * static_cast<double>(k + 1) / static_cast<double>(count);
+      piece(a + d * s0, a + d * s1, visit);
+      if (done(s1)) return true;
+    }
+    return false;
+  }
+
   // Liang–Barsky: the part of a + s·d (s in [0, 1]) inside [lower, upper], if any.
   static bool clip(Vec2 a, Vec2 d, Vec2 lower, Vec2 upper, double& s_in, double& s_out) {
     const double starts[2] = {a.x, a.y};

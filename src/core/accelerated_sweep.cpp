@@ -319,16 +319,23 @@ void arc_interior(const StaticQuery& query, const ArcFrame& arc, Candidate& best
       return;
     }
   };
-  // (A start beyond a circle, on its other side, is no contact with the arc: `touching`.)
+  // A start beyond a circle, on its other side, is no contact with the arc (`touching`), unless
+  // the centre lies nearer that circle than the other: the ball then overlaps the arc's circle
+  // from that side (placed against it, to a rounding), and pressing on counts at once, as it does
+  // on a straight line. The circles' middle is arc_radius for a ball smaller than the arc, and
+  // the ball's radius for a larger one.
   const double growth = query.scaled_growth();
-  consider(query.closings(outside_circle(path, arc_radius + radius, growth), AtStart::touching),
+  const double middle = std::max(arc_radius, radius);
+  const bool nearer_outside = dot(path.s, path.s) >= middle * middle;
+  const auto start = [](bool nearer) { return nearer ? AtStart::counts : AtStart::touching; };
+  consider(query.closings(outside_circle(path, arc_radius + radius, growth), start(nearer_outside)),
            1.0);
   const double inner = arc_radius - radius;
   if (inner > 0.0) {
     // (The inner circle shrinks as the ball grows.)
-    consider(query.closings(inside_circle(path, inner, -growth), AtStart::touching), 1.0);
+    consider(query.closings(inside_circle(path, inner, -growth), start(!nearer_outside)), 1.0);
   } else if (inner < 0.0) {
-    consider(query.closings(outside_circle(path, -inner, growth), AtStart::touching), -1.0);
+    consider(query.closings(outside_circle(path, -inner, growth), start(!nearer_outside)), -1.0);
   } else if (query.moves() && within_distance(path.s, std::ldexp(arc_radius, -40))) {
     // A ball exactly as large as the arc's circle, its centre on the arc's centre (or a rounding
     // off it): it fills the circle, and any motion presses it into the wall where it moves to.

@@ -108,6 +108,29 @@ TEST(SweepAccelerated, AtRestOnASupportIsAContactNow) {
   EXPECT_NEAR(bottom.normal.y, -1.0, 1e-15);
 }
 
+TEST(SweepAccelerated, PressingIntoAnArcFromAPlacementsRoundingHitsAtOnce) {
+  // A ball placed against an arc ends up overlapping its circle by a rounding, from inside (in
+  // the bowl) or from outside. Pressing on, it meets the arc at once, as the straight-line sweep
+  // says, and falling does not change that.
+  const Arc arc{{0.0, 0.0}, 3.0, -0.5 * std::numbers::pi, std::numbers::pi};
+  const double angle = std::numbers::pi / 4.0;
+  const Vec2 out{std::cos(angle), std::sin(angle)};
+  for (const double side : {-1.0, 1.0}) {
+    const double distance = 3.0 + side * (1.0 - 1e-14);  // 1e-14 into the wall
+    const Ball ball{out * distance, 1.0};
+    const Vec2 pressing = out * (-side * 2.0);
+    for (const Vec2 gravity : {Vec2{}, kGravity}) {
+      const Impact impact = time_of_impact_ball_arc(ball, Motion{pressing, gravity}, arc, 1.0);
+      ASSERT_TRUE(impact.hit) << side << " " << gravity.y;
+      EXPECT_EQ(impact.t, 0.0) << side << " " << gravity.y;
+      EXPECT_NEAR(dot(impact.normal, out), -side, 1e-12) << side;
+    }
+    // Leaving, it does not meet it at once (falling, it may meet it later).
+    const Impact leaving = time_of_impact_ball_arc(ball, Motion{-pressing, kGravity}, arc, 1e-3);
+    EXPECT_FALSE(leaving.hit) << side;
+  }
+}
+
 TEST(SweepAccelerated, ThrownPastAnEndFallsOntoTheSegment) {
   // The ball starts below the line of a segment that begins at x = 0, rises beside it and
   // comes down on top of it: the far side of the line, reached round the end.

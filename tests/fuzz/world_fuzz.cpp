@@ -326,9 +326,12 @@ class Harness {
       filter = {kind, kind | (r / 16 % 2 == 0 ? 1U : 0U), r / 32 % 2 == 0 ? 0 : -1};
     }
     const Snapshot before = snapshot(world());
-    CAROM_TRACE("add_ball(p {%.17g, %.17g}, v {%.17g, %.17g}, r %.17g, m %.17g, e %.17g)\n",
-                def.position.x, def.position.y, def.velocity.x, def.velocity.y, def.radius,
-                def.mass, def.restitution.value_or(-1.0));
+    CAROM_TRACE(
+        "add_ball(p {%.17g, %.17g}, v {%.17g, %.17g}, r %.17g, m %.17g, e %.17g, filter {%llu, "
+        "%llu, %d})\n",
+        def.position.x, def.position.y, def.velocity.x, def.velocity.y, def.radius, def.mass,
+        def.restitution.value_or(-1.0), static_cast<unsigned long long>(filter.category),
+        static_cast<unsigned long long>(filter.mask), static_cast<int>(filter.group));
     try {
       const BallId id = world().add_ball(def, filter);
       check(world().contains(id), "add_ball returned a handle the world does not contain");

@@ -11,7 +11,7 @@
 #include "reference_distance.hpp"
 
 namespace carom {
-namespace {
+namespace sweep_reference_tests {
 
 using testing::GapFunction;
 using testing::RandomCases;
@@ -106,5 +106,5 @@ TEST(SweepReference, BallInsideArcBowls) {
   });
 }
 
-}  // namespace
+}  // namespace sweep_reference_tests
 }  // namespace carom

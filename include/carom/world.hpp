@@ -28,6 +28,7 @@
 #include "carom/bounce.hpp"
 #include "carom/filter.hpp"
 #include "carom/handles.hpp"
+#include "carom/sensor.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
 #include "carom/world_query.hpp"
@@ -162,10 +163,26 @@ class World {
   // Four segments along an axis-aligned box, with consecutive ids from the one returned: bottom
   // (lower-left to lower-right), right, top, left (counter-clockwise).
   WallId add_box(Vec2 lower, Vec2 upper);
+  // Sensors (carom/sensor.hpp): a segment, an arc or a disc (a Ball's centre and radius) that
+  // balls pass through, recording an enter and an exit at the exact times they start and stop
+  // overlapping it (sensor_events()); with SensorAction::remove_ball the ball that enters is
+  // removed. Sensors take wall ids (they count in wall_count()) and filters (set_wall_filter);
+  // queries do not see them. Refused in a periodic world, as walls are. A ball already
+  // overlapping a new sensor enters it at the start of the next run.
+  WallId add_sensor(const Segment& segment, SensorAction action = SensorAction::report);
+  WallId add_sensor(const Arc& arc, SensorAction action = SensorAction::report);
+  WallId add_sensor(const Ball& disc, SensorAction action = SensorAction::report);
   [[nodiscard]] std::size_t wall_count() const noexcept;
   // A wall's shape as it was added: a Segment (a box boundary's four walls, ids 0–3, and every
-  // segment) or an Arc. Throws InvalidArgument for an id at or past wall_count().
-  [[nodiscard]] std::variant<Segment, Arc> wall(WallId id) const;
+  // segment), an Arc, or a sensor's disc (a Ball). Throws InvalidArgument for an id at or past
+  // wall_count().
+  [[nodiscard]] std::variant<Segment, Arc, Ball> wall(WallId id) const;
+  // What the sensor `id` does; nothing for a wall that is no sensor. Throws InvalidArgument for
+  // an id at or past wall_count().
+  [[nodiscard]] std::optional<SensorAction> sensor(WallId id) const;
+  // The balls inside sensor `id` (overlapping it as of the last enter and exit recorded), in
+  // handle order.
+  [[nodiscard]] std::vector<BallId> balls_in_sensor(WallId id) const;
   // The definition the world was made with, as given.
   [[nodiscard]] const WorldDef& def() const noexcept;
 
@@ -236,6 +253,10 @@ class World {
   // the next; a long science run may turn it off. The stop condition still sees every contact,
   // so a condition that records what it needs and answers false is a per-contact callback.
   void set_contact_recording(bool enabled) noexcept;
+  // Sensors' enters and exits during the last step / run_until / run_collisions, in the order
+  // they happened (each with its place among contacts()). Always recorded: they are few. A
+  // removed ball leaves its sensors without exits.
+  [[nodiscard]] std::span<const SensorEvent> sensor_events() const noexcept;
   [[nodiscard]] bool contact_recording() const noexcept;
 
   // ---- queries, at the world's current time ----

@@ -256,19 +256,24 @@ TimeSpans overlap_times(const Ball& ball, const Motion& motion, const SensorShap
 }
 
 SensorChange next_sensor_change(const Ball& ball, const Motion& motion, const SensorShape& shape,
-                                bool inside, double horizon) {
+                                bool inside, double horizon, double now) {
   const StaticQuery query = make_query(ball, motion, shape, horizon);
   const double scaled_horizon = query.scaled_horizon();
   const TimeSpans spans = scaled_overlap_times(query, shape, scaled_horizon);
-  const bool overlapping_now = spans.size() > 0 && spans.start(0) == 0.0;
-  if (inside != overlapping_now) return {true, 0.0};
+  const auto at_now = [&](double scaled_t) { return now + query.real_time(scaled_t) == now; };
+  // The first span that is more than an instant at now.
+  std::size_t first = 0;
+  if (spans.size() > 0 && at_now(spans.end(0))) first = 1;
+  const bool any = first < spans.size();
   if (inside) {
-    // Leaving: the end of the span that holds now, unless it runs to the horizon.
-    if (!(spans.end(0) < scaled_horizon)) return {};
-    return {true, query.real_time(spans.end(0))};
+    // Leaving: at once where no span holds now, else at the end of the one that does, unless
+    // it runs to the horizon.
+    if (!any || !at_now(spans.start(first))) return {true, 0.0};
+    if (!(spans.end(first) < scaled_horizon)) return {};
+    return {true, query.real_time(spans.end(first))};
   }
-  if (spans.size() == 0) return {};
-  return {true, query.real_time(spans.start(0))};
+  if (!any) return {};
+  return {true, query.real_time(spans.start(first))};
 }
 
 }  // namespace carom::detail

@@ -56,14 +56,17 @@ struct SensorShape {
 // The next change of a ball's overlap with a sensor: from `inside` (the overlap as last recorded)
 // to the other state, at t in [0, horizon]. A recorded state that the motion does not bear out
 // at 0 changes at 0 (a ball placed into or out of the sensor), so enters and exits alternate.
-// Computed again from the same ball state and the same recorded state, it gives the same answer,
-// so a change at 0 followed by the change back at 0 cannot repeat.
+// `now` is the clock's time at t = 0: a span that starts or ends at a t the clock cannot tell
+// from 0 (now + t == now) counts as starting or ending at 0, so that an enter is never followed
+// by an exit at the same instant (the ball, brought to the enter's time, may sit a rounding
+// outside the shape) nor an exit by an enter. Computed again from the same ball state and the
+// same recorded state, it gives the same answer, so changes at one instant cannot repeat.
 struct SensorChange {
   bool found = false;
   double t = 0.0;
 };
 [[nodiscard]] SensorChange next_sensor_change(const Ball& ball, const Motion& motion,
-                                              const SensorShape& shape, bool inside,
-                                              double horizon);
+                                              const SensorShape& shape, bool inside, double horizon,
+                                              double now = 0.0);
 
 }  // namespace carom::detail

@@ -98,8 +98,12 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball
   const detail::Species& kind = species[b.species];
   const Ball shape{p, kind.radius};
   for (const std::uint32_t w : grid.walls(cell)) {
-    if (!meets_wall(ball, w)) continue;  // its filter lets it through
     const double horizon = best.time < kInfinity ? best.time - time : kFarFuture;
+    if (!walls[w].solid()) [[unlikely]] {
+      consider_sensor(best, ball, w, shape, Motion{v, {}}, horizon);
+      continue;
+    }
+    if (!meets_wall(ball, w)) continue;  // its filter lets it through
     const Impact impact = detail::time_of_impact(walls[w], shape, v, horizon);
     if (!impact.hit) continue;
     Event candidate;
@@ -109,6 +113,8 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball
     candidate.partner = w;
     if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
   }
+  if (!sensor_inside.empty()) [[unlikely]]
+    consider_inside_sensors(best, ball, shape, Motion{v, {}}, kFarFuture);
 
   // Balls in the neighbouring cells, next. Away from the grid's edges the 3×3 block is three
   // runs of three cells and, in a periodic world, no difference needs the minimum image:

@@ -22,7 +22,41 @@ Wall make_arc_wall(const char* function, const Arc& arc) {
   return wall;
 }
 
+Wall make_disc_sensor(const Ball& disc, SensorRole role) {
+  Wall wall;
+  wall.is_disc = true;
+  wall.disc = disc;
+  wall.sensor = role;
+  return wall;
+}
+
+SensorRole sensor_role(SensorAction action) {
+  return action == SensorAction::remove_ball ? SensorRole::remove_ball : SensorRole::report;
+}
+
+SensorShape sensor_shape(const Wall& wall) {
+  SensorShape shape;
+  if (wall.is_disc) {
+    shape.kind = SensorShape::Kind::disc;
+    shape.disc = wall.disc;
+  } else if (wall.is_arc) {
+    shape.kind = SensorShape::Kind::arc;
+    shape.arc = wall.frame;
+  } else {
+    shape.kind = SensorShape::Kind::segment;
+    shape.segment = wall.segment;
+  }
+  return shape;
+}
+
 Vec2 nearest_point(const Wall& wall, Vec2 p) {
+  if (wall.is_disc) {
+    // The disc's nearest point (p itself inside it).
+    const Vec2 out = p - wall.disc.center;
+    const double distance = length(out);
+    return distance <= wall.disc.radius ? p
+                                        : wall.disc.center + out * (wall.disc.radius / distance);
+  }
   return wall.is_arc ? wall.frame.nearest(p) : carom::nearest_point(wall.segment, p);
 }
 
@@ -116,6 +150,11 @@ RayCrossing ray_crossing(const Wall& wall, Vec2 o, Vec2 d) {
 }
 
 void bounds(const Wall& wall, Vec2& lower, Vec2& upper) {
+  if (wall.is_disc) {
+    lower = wall.disc.center - Vec2{wall.disc.radius, wall.disc.radius};
+    upper = wall.disc.center + Vec2{wall.disc.radius, wall.disc.radius};
+    return;
+  }
   if (wall.is_arc) {
     lower = wall.arc.center - Vec2{wall.arc.radius, wall.arc.radius};
     upper = wall.arc.center + Vec2{wall.arc.radius, wall.arc.radius};

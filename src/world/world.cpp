@@ -79,7 +79,7 @@ std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except,
   }
   // A ball passes through what its filter does not meet: no overlap to refuse there.
   const auto overlaps_wall = [&](std::uint32_t w) {
-    return (!filters.active() || filter_meets_wall(filter, w)) &&
+    return walls[w].solid() && (!filters.active() || filter_meets_wall(filter, w)) &&
            length_squared(detail::nearest_point(walls[w], p) - p) < r * r;
   };
   if (!grid_valid) {
@@ -212,17 +212,7 @@ BallId World::add_ball(const BallDef& def, const CollisionFilter& ball_filter) {
 void World::remove_ball(BallId id) {
   Impl& w = *impl_;
   const std::uint32_t slot = w.slot_of("World::remove_ball", id);
-  BallSlot& b = w.balls[slot];
-  if (w.gravity_on) {
-    // Whatever rested on it falls.
-    w.advance(slot, w.time);
-    w.disturb(slot);
-  }
-  w.grid.erase(slot);
-  w.species.release(b.species);
-  b.species = detail::kNoSpecies;
-  ++b.version;
-  w.release(slot);
+  w.remove_slot(slot);
   w.repredict_changed(slot);
 }
 
@@ -248,14 +238,7 @@ WallId World::add_segment(const Segment& segment) {
   constexpr const char* kFunction = "World::add_segment";
   detail::require_finite(kFunction, "segment.a", segment.a);
   detail::require_finite(kFunction, "segment.b", segment.b);
-  Impl& w = *impl_;
-  if (w.def.boundary == Boundary::periodic) {
-    refuse(kFunction, "segment", "-", "walls in a periodic world are not supported yet");
-  }
-  require_room_for_a_wall(kFunction, "segment", w.walls.size());
-  w.walls.push_back(detail::make_segment_wall(segment));
-  w.wall_added();
-  return static_cast<WallId>(w.walls.size() - 1);
+  return impl_->add_wall(kFunction, "segment", detail::make_segment_wall(segment));
 }
 
 WallId World::add_polyline(std::span<const Vec2> points, bool closed) {
@@ -271,15 +254,7 @@ WallId World::add_polyline(std::span<const Vec2> points, bool closed) {
 
 WallId World::add_arc(const Arc& arc) {
   constexpr const char* kFunction = "World::add_arc";
-  Impl& w = *impl_;
-  detail::Wall wall = detail::make_arc_wall(kFunction, arc);
-  if (w.def.boundary == Boundary::periodic) {
-    refuse(kFunction, "arc", "-", "walls in a periodic world are not supported yet");
-  }
-  require_room_for_a_wall(kFunction, "arc", w.walls.size());
-  w.walls.push_back(wall);
-  w.wall_added();
-  return static_cast<WallId>(w.walls.size() - 1);
+  return impl_->add_wall(kFunction, "arc", detail::make_arc_wall(kFunction, arc));
 }
 
 WallId World::add_box(Vec2 lower, Vec2 upper) {
@@ -287,17 +262,92 @@ WallId World::add_box(Vec2 lower, Vec2 upper) {
   return add_polyline(corners, true);
 }
 
+WallId World::add_sensor(const Segment& segment, SensorAction action) {
+  constexpr const char* kFunction = "World::add_sensor";
+  detail::require_finite(kFunction, "segment.a", segment.a);
+  detail::require_finite(kFunction, "segment.b", segment.b);
+  detail::Wall wall = detail::make_segment_wall(segment);
+  wall.sensor = detail::sensor_role(action);
+  return impl_->add_wall(kFunction, "segment", wall);
+}
+
+WallId World::add_sensor(const Arc& arc, SensorAction action) {
+  constexpr const char* kFunction = "World::add_sensor";
+  detail::Wall wall = detail::make_arc_wall(kFunction, arc);
+  wall.sensor = detail::sensor_role(action);
+  return impl_->add_wall(kFunction, "arc", wall);
+}
+
+WallId World::add_sensor(const Ball& disc, SensorAction action) {
+  constexpr const char* kFunction = "World::add_sensor";
+  detail::require_finite(kFunction, "disc.center", disc.center);
+  detail::require_positive(kFunction, "disc.radius", disc.radius);
+  detail::require_finite(kFunction, "disc.radius", disc.radius);
+  // The whole disc within the double range, as an arc's circle must be.
+  const double reach = std::max(std::abs(disc.center.x), std::abs(disc.center.y)) + disc.radius;
+  if (!std::isfinite(reach)) {
+    refuse(kFunction, "disc", detail::vector_text(disc.center),
+           "the disc must lie within the double range");
+  }
+  return impl_->add_wall(kFunction, "disc",
+                         detail::make_disc_sensor(disc, detail::sensor_role(action)));
+}
+
+WallId World::Impl::add_wall(const char* function, const char* argument, const detail::Wall& wall) {
+  if (def.boundary == Boundary::periodic) {
+    refuse(function, argument, "-", "walls in a periodic world are not supported yet");
+  }
+  require_room_for_a_wall(function, argument, walls.size());
+  walls.push_back(wall);
+  wall_added();
+  return static_cast<WallId>(walls.size() - 1);
+}
+
 std::size_t World::wall_count() const noexcept { return impl_->walls.size(); }
 
-std::variant<Segment, Arc> World::wall(WallId id) const {
-  if (id >= impl_->walls.size()) {
-    refuse("World::wall", "id", std::to_string(id),
-           "must be below wall_count() = " + std::to_string(impl_->walls.size()));
+namespace {
+
+const detail::Wall& wall_named(const char* function, const std::vector<detail::Wall>& walls,
+                               WallId id) {
+  if (id >= walls.size()) {
+    refuse(function, "id", std::to_string(id),
+           "must be below wall_count() = " + std::to_string(walls.size()));
   }
-  const detail::Wall& wall = impl_->walls[id];
+  return walls[id];
+}
+
+}  // namespace
+
+std::variant<Segment, Arc, Ball> World::wall(WallId id) const {
+  const detail::Wall& wall = wall_named("World::wall", impl_->walls, id);
+  if (wall.is_disc) return wall.disc;
   if (wall.is_arc) return wall.arc;
   return wall.segment;
 }
+
+std::optional<SensorAction> World::sensor(WallId id) const {
+  switch (wall_named("World::sensor", impl_->walls, id).sensor) {
+    case detail::SensorRole::none:
+      return std::nullopt;
+    case detail::SensorRole::report:
+      return SensorAction::report;
+    case detail::SensorRole::remove_ball:
+      return SensorAction::remove_ball;
+  }
+  return std::nullopt;
+}
+
+std::vector<BallId> World::balls_in_sensor(WallId id) const {
+  (void)wall_named("World::balls_in_sensor", impl_->walls, id);
+  std::vector<BallId> inside;
+  for (const std::uint64_t key : impl_->sensor_inside) {
+    if (static_cast<WallId>(key & 0xffffffffU) != id) continue;
+    inside.push_back(impl_->id_of(impl_->slot_of_handle[static_cast<std::uint32_t>(key >> 32)]));
+  }
+  return inside;
+}
+
+std::span<const SensorEvent> World::sensor_events() const noexcept { return impl_->sensor_events; }
 
 const WorldDef& World::def() const noexcept { return impl_->def; }
 
@@ -681,7 +731,7 @@ detail::DragStop World::Impl::sweep_drag(std::uint32_t slot, Vec2 from, Vec2 end
     for (std::uint32_t j = 0; j < balls.size(); ++j) sweep_ball(j);
   }
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    if (!meets_wall(slot, w)) continue;
+    if (!walls[w].solid() || !meets_wall(slot, w)) continue;
     const detail::Wall& wall = walls[w];
     const Impact hit = detail::time_of_impact(wall, moving, move, 1.0);
     if (!hit.hit) continue;

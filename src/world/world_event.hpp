@@ -23,11 +23,14 @@ struct Event {
   std::uint32_t owner = 0;    // the ball whose slot holds the event
   std::uint32_t partner = 0;  // the other ball, the wall, or the CrossingSide
   // The partner ball's contact count when predicted: the event is stale once it has changed. A
-  // cell crossing's is kClearBehind where the prediction found no contact with any ball around
-  // its owner, else 0 (docs/engine.md, "Crossing a cell").
+  // sensor's event has kSensorEvent. A cell crossing's is kClearBehind where the prediction found
+  // no contact with any ball around its owner, else 0 (docs/engine.md, "Crossing a cell").
   std::uint32_t partner_version = 0;
 };
 inline constexpr std::uint32_t kClearBehind = 1;
+// A ball_wall event's partner_version is this where the wall is a sensor: the event is the ball's
+// next enter or exit there, not a contact.
+inline constexpr std::uint32_t kSensorEvent = 1;
 
 // Time, then kind, then the balls' handles (for two balls the pair in ascending order, then the
 // owner), so that simultaneous events are processed in one documented, deterministic order.

@@ -158,10 +158,15 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
   const double radius = radius_at(ball, time);
   const Ball shape{p, radius};
   for (const std::uint32_t w : grid.walls(cell)) {
+    if (!walls[w].solid()) {
+      consider_sensor(best, ball, w, shape, motion, horizon());
+      continue;
+    }
     if (supported_by(w)) continue;
     const Impact impact = detail::time_of_impact(walls[w], shape, motion, horizon());
     if (impact.hit) consider(impact.t, EventKind::ball_wall, w, 0);
   }
+  if (!sensor_inside.empty()) consider_inside_sensors(best, ball, shape, motion, horizon());
 
   // The balls of the 3×3 block: by their offsets as they are, as the minimum image, or, in a
   // periodic grid with few cells, at all nine images (as prediction_steps.hpp takes them).
@@ -277,6 +282,8 @@ bool World::Impl::process_general(const Event& event) {
                         : resolve_pair_under_growth(i, j, event.time);
     }
     case EventKind::ball_wall:
+      if (event.partner_version == detail::kSensorEvent)
+        return process_sensor(i, event.partner, event.time);
       return gravity_on ? resolve_wall_under_gravity(i, event.partner, event.time)
                         : resolve_wall_under_growth(i, event.partner, event.time);
     case EventKind::cell_crossing:

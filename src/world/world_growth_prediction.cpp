@@ -56,9 +56,14 @@ void World::Impl::predict_growing(std::uint32_t ball, std::uint32_t crossed) {
   const Motion motion{v, {}, growth};
   const Ball shape{p, radius};
   for (const std::uint32_t w : grid.walls(cell)) {
+    if (!walls[w].solid()) {
+      consider_sensor(best, ball, w, shape, motion, horizon());
+      continue;
+    }
     const Impact impact = detail::time_of_impact(walls[w], shape, motion, horizon());
     if (impact.hit) consider(impact.t, EventKind::ball_wall, w, 0);
   }
+  if (!sensor_inside.empty()) consider_inside_sensors(best, ball, shape, motion, horizon());
 
   // A neighbour's radius now and growth speed, as radius_at and growth_of give them.
   struct Size {

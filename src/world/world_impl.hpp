@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,10 @@ struct World::Impl : detail::BallStore {
   std::uint64_t collisions = 0;
   std::uint64_t events_since_sort = 0;
   std::vector<ContactEvent> contacts;
+  std::vector<SensorEvent> sensor_events;  // of the last run
+  // The (ball, sensor) pairs overlapping as last recorded: handle index << 32 | wall id, so that
+  // iteration (and the save) goes by handle.
+  std::set<std::uint64_t> sensor_inside;
   ContactEvent last_contact;  // the latest resolved, recorded or not (for the stop condition)
   std::function<bool(const ContactEvent&)> stop_condition;
   std::function<bool(const RunStatus&)> progress_callback;
@@ -219,6 +224,29 @@ struct World::Impl : detail::BallStore {
     candidate.partner_version = partner_version;
     if (detail::earlier(candidate, best, handle_of.data())) best = candidate;
   }
+  // ---- sensors (world_sensors.cpp) ----
+  [[nodiscard]] std::uint64_t sensor_key(std::uint32_t ball, std::uint32_t wall) const {
+    return std::uint64_t{handle_of[ball]} << 32 | wall;
+  }
+  // Keeps in `best` the earlier of it and the ball's next enter or exit at sensor `wall`, the
+  // ball (of that shape, at the world's time) moving with `motion`: an enter only where the
+  // filters meet, an exit wherever it is recorded inside.
+  void consider_sensor(detail::Event& best, std::uint32_t ball, std::uint32_t wall,
+                       const Ball& shape, const Motion& motion, double horizon) const;
+  // consider_sensor for every sensor the ball is recorded inside, listed in its cell or not (it
+  // was placed far from it, say): its exit is due.
+  void consider_inside_sensors(detail::Event& best, std::uint32_t ball, const Ball& shape,
+                               const Motion& motion, double horizon) const;
+  // A ball's enter or exit at a sensor at t: recorded, and the ball removed (a pocket) or
+  // predicted again. Never a contact.
+  bool process_sensor(std::uint32_t ball, std::uint32_t wall, double t);
+  // Adds a wall or a sensor (validated) and lists it; its id.
+  WallId add_wall(const char* function, const char* argument, const detail::Wall& wall);
+  // Forgets the sensor pairs of a ball that is gone.
+  void forget_sensor_pairs(std::uint32_t handle);
+  // Removes a live ball, during a run or between runs (whatever it carried falls).
+  void remove_slot(std::uint32_t slot);
+
   // A box boundary's sides (walls 0 to 3) meet every ball, whatever its filter: no ball leaves.
   [[nodiscard]] bool filter_meets_wall(std::uint32_t filter, std::uint32_t wall) const {
     return (def.boundary == Boundary::box && wall < 4) || filters.meet(filter, walls[wall].filter);
@@ -255,6 +283,11 @@ struct World::Impl : detail::BallStore {
   void load_grid(detail::ByteReader& in);
   void load_carriage(detail::ByteReader& in, std::uint32_t slot, const std::string& which);
   void load_filters(detail::ByteReader& in);
+  void load_sensors(detail::ByteReader& in);
+  [[nodiscard]] bool has_sensors() const {
+    return std::any_of(walls.begin(), walls.end(),
+                       [](const detail::Wall& wall) { return !wall.solid(); });
+  }
 
   // ---- the grid's upkeep (world_grid_upkeep.cpp) ----
   // Makes the grid hold every live ball with cells no smaller than the largest diameter (and,

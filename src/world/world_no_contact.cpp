@@ -68,6 +68,13 @@ bool World::Impl::no_contact_ever() const {
     return true;
   }
 
+  // A moving ball inside a sensor leaves it some day, or may: an exit to come.
+  for (const std::uint64_t key : sensor_inside) {
+    if (balls[slot_of_handle[static_cast<std::uint32_t>(key >> 32)]].velocity != Vec2{}) {
+      return false;
+    }
+  }
+
   // Open world or box: straight lines in the plane. The distance from a point moving in a
   // straight line to a convex set is a convex function of time, so once it grows it grows for
   // ever. Ball pairs: |s + u·t| grows once s·u > 0, and never falls below |s × u|/|u|, so a pair
@@ -81,7 +88,14 @@ bool World::Impl::no_contact_ever() const {
     const Vec2 p = position_at(i, time);
     for (const detail::Wall& wall : walls) {
       if (a.velocity == Vec2{}) break;
-      if (wall.is_arc) {
+      if (wall.is_disc) {
+        // A sensor's disc (convex): outside it by more than the radius and moving away from it.
+        const Vec2 from_center = p - wall.disc.center;
+        const double clear = (wall.disc.radius + radius_of(i)) * (1.0 + kApartSlack);
+        if (!(length(from_center) > clear) || !moving_apart(from_center, a.velocity)) {
+          return false;
+        }
+      } else if (wall.is_arc) {
         const Vec2 from_center = p - wall.arc.center;
         const double clear = (wall.arc.radius + radius_of(i)) * (1.0 + kApartSlack);
         if (!(length(from_center) > clear) || !moving_apart(from_center, a.velocity)) {

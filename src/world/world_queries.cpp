@@ -226,8 +226,9 @@ class QueryVisitor {
   }
 
  private:
+  // Queries see solid walls: a sensor is nothing a ray or a ball stops at.
   [[nodiscard]] bool sees_wall(std::uint32_t id) const {
-    return (w_.filters[w_.walls[id].filter].category & filter_.mask) != 0;
+    return w_.walls[id].solid() && (w_.filters[w_.walls[id].filter].category & filter_.mask) != 0;
   }
 
   // Without a grid (no ball yet, or walls added since the last run): every ball at each of its

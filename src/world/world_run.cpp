@@ -112,6 +112,7 @@ struct World::Impl::RunGuard {
 std::uint64_t World::Impl::run(const char* function, RunGoal goal, double end,
                                std::uint64_t max_contacts) {
   contacts.clear();
+  sensor_events.clear();
   stop_reason = StopReason::none;
   mover_met = false;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);
@@ -190,6 +191,7 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::moved_measurably(const Event& conta
   if (elapsed == kInfinity) return true;  // the run's first contact
   const auto moved = [&](std::uint32_t ball) {
     const BallSlot& b = balls[ball];
+    if (!b.alive()) return true;  // removed by a sensor: gone, which is progress
     // |x| + |y| bounds the length within a factor √2, which is all a threshold needs.
     const double travel = elapsed * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
     const double size = std::abs(b.position.x) + std::abs(b.position.y) + radius_of(ball);
@@ -203,6 +205,7 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::time_too_coarse(const Event& event)
   const double time_step = std::abs(time) * 0x1p-52;
   const auto coarse = [&](std::uint32_t ball) {
     const BallSlot& b = balls[ball];
+    if (!b.alive()) return false;  // removed by a sensor
     const double motion = time_step * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
     return motion > kResolvableMotion * radius_of(ball);
   };

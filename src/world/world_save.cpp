@@ -40,6 +40,10 @@ constexpr std::uint32_t kGrowthVersion = 4;
 // filter table, then each ball's filter number in handle order, then each wall's), so that a
 // world without filters saves exactly the bytes it always did.
 constexpr std::uint32_t kFiltersFlag = 0x100;
+// Added likewise: the world has sensors (a sensor's disc is wall kind 2), saved after the filters:
+// each wall's sensor role, then the (ball, sensor) pairs recorded inside.
+constexpr std::uint32_t kSensorsFlag = 0x200;
+constexpr std::uint32_t kFlags = kFiltersFlag | kSensorsFlag;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -87,7 +91,7 @@ std::string read_payload(const char* function, const std::string& source, std::i
             "truncated: the header needs " + std::to_string(kHeaderSize) + " bytes");
   }
   version = static_cast<std::uint32_t>(get_unsigned(header + 8, 4));
-  const std::uint32_t base = version & ~kFiltersFlag;
+  const std::uint32_t base = version & ~kFlags;
   if (base != kVersion && base != kGravityVersion && base != kGrowthVersion) {
     damaged(function, source, "version " + std::to_string(version),
             "unsupported version (this build reads versions " + std::to_string(kVersion) + ", " +
@@ -151,8 +155,11 @@ std::string World::Impl::save_payload() const {
 
   out.u32(static_cast<std::uint32_t>(walls.size()));
   for (const detail::Wall& wall : walls) {
-    out.u8(wall.is_arc ? 1 : 0);
-    if (wall.is_arc) {
+    out.u8(wall.is_disc ? 2 : wall.is_arc ? 1 : 0);
+    if (wall.is_disc) {
+      out.vec2(wall.disc.center);
+      out.f64(wall.disc.radius);
+    } else if (wall.is_arc) {
       out.vec2(wall.arc.center);
       out.f64(wall.arc.radius);
       out.f64(wall.arc.start_angle);
@@ -241,11 +248,17 @@ std::string World::Impl::save_payload() const {
     for (const std::uint32_t i : slot_of_handle) out.u32(infos[i].filter);
     for (const detail::Wall& wall : walls) out.u32(wall.filter);
   }
+  if (has_sensors()) {
+    for (const detail::Wall& wall : walls) out.u8(static_cast<std::uint8_t>(wall.sensor));
+    out.u64(sensor_inside.size());
+    for (const std::uint64_t key : sensor_inside) out.u64(key);
+  }
   return out.bytes();
 }
 
 std::uint32_t World::Impl::save_version() const {
-  const std::uint32_t flags = filters.active() ? kFiltersFlag : 0U;
+  const std::uint32_t flags =
+      (filters.active() ? kFiltersFlag : 0U) | (has_sensors() ? kSensorsFlag : 0U);
   if (gravity_on) return kGravityVersion | flags;
   return (growth_on ? kGrowthVersion : kVersion) | flags;
 }
@@ -270,7 +283,7 @@ void World::save(const std::filesystem::path& path) const {
 // ---- reading ---------------------------------------------------------------------------------
 
 void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
-  const std::uint32_t version = flagged_version & ~kFiltersFlag;
+  const std::uint32_t version = flagged_version & ~kFlags;
   using carom::number_text;
   using detail::vector_text;
   const std::uint8_t boundary = in.u8("def.boundary");
@@ -356,7 +369,22 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
   }
   boundary_walls = def.boundary == Boundary::box ? 4 : 0;
   for (std::uint32_t w = 0; w < wall_count; ++w) {
-    if (in.u8("wall kind") != 0) {
+    const std::uint8_t kind = in.u8("wall kind");
+    if (kind > 2 || (kind == 2 && (flagged_version & kSensorsFlag) == 0)) {
+      in.inconsistent("wall kind", std::to_string(kind),
+                      "0 (segment), 1 (arc) or 2 (a sensor's disc)");
+    }
+    if (kind == 2) {
+      Ball disc;
+      disc.center = in.vec2("disc center");
+      disc.radius = in.f64("disc radius");
+      if (!finite(disc.center) || !std::isfinite(disc.radius) || !(disc.radius > 0.0)) {
+        in.inconsistent("disc " + std::to_string(w),
+                        vector_text(disc.center) + " " + number_text(disc.radius),
+                        "a finite centre and a finite radius > 0");
+      }
+      walls.push_back(detail::make_disc_sensor(disc, detail::SensorRole::report));
+    } else if (kind == 1) {
       Arc arc;
       arc.center = in.vec2("arc center");
       arc.radius = in.f64("arc radius");
@@ -474,6 +502,7 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
     }
   }
   if ((flagged_version & kFiltersFlag) != 0) load_filters(in);
+  if ((flagged_version & kSensorsFlag) != 0) load_sensors(in);
   if (in.remaining() != 0) {
     in.inconsistent("payload", std::to_string(in.remaining()) + " bytes", "left over at the end");
   }
@@ -503,6 +532,37 @@ void World::Impl::load_filters(ByteReader& in) {
   };
   for (std::uint32_t i = 0; i < balls.size(); ++i) infos[i].filter = number("ball filter");
   for (detail::Wall& wall : walls) wall.filter = number("wall filter");
+}
+
+// The sensors' section: each wall's role (a disc must be a sensor), then the pairs recorded
+// inside, ascending, each naming a live ball's handle and a sensor.
+void World::Impl::load_sensors(ByteReader& in) {
+  for (detail::Wall& wall : walls) {
+    const std::uint8_t role = in.u8("sensor role");
+    if (role > 2 || (wall.is_disc && role == 0)) {
+      in.inconsistent("sensor role", std::to_string(role),
+                      "0 (a wall), 1 (report) or 2 (remove the ball); a disc is a sensor");
+    }
+    wall.sensor = static_cast<detail::SensorRole>(role);
+  }
+  const std::uint64_t count = in.u64("sensor pair count");
+  if (count > in.remaining() / 8) {
+    in.inconsistent("sensor pair count", std::to_string(count), "more than the bytes that follow");
+  }
+  std::uint64_t previous = 0;
+  for (std::uint64_t k = 0; k < count; ++k) {
+    const std::uint64_t key = in.u64("sensor pair");
+    const auto handle = static_cast<std::uint32_t>(key >> 32);
+    const auto wall = static_cast<std::uint32_t>(key & 0xffffffffU);
+    const bool named = handle < slot_of_handle.size() && balls[slot_of_handle[handle]].alive() &&
+                       wall < walls.size() && !walls[wall].solid();
+    if (!named || (k > 0 && key <= previous)) {
+      in.inconsistent("sensor pair", std::to_string(handle) + ", " + std::to_string(wall),
+                      "a live ball and a sensor, in ascending order");
+    }
+    sensor_inside.insert(sensor_inside.end(), key);
+    previous = key;
+  }
 }
 
 // A slot's carriage (version 3), checked for what it names: walls that exist, handles within the

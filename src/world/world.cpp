@@ -374,6 +374,7 @@ double World::run_until(double time) {
 std::uint64_t World::run_collisions(std::uint64_t count) {
   if (count == 0) {
     impl_->contacts.clear();
+    impl_->sensor_events.clear();
     impl_->stop_reason = StopReason::none;
     return 0;
   }
@@ -390,6 +391,7 @@ std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
   }
   if (count == 0) {
     impl_->contacts.clear();
+    impl_->sensor_events.clear();
     impl_->stop_reason = StopReason::none;
     return 0;
   }

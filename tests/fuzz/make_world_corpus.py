@@ -2,7 +2,7 @@
 """Writes the seed corpus of carom_world_fuzz (tests/fuzz/corpus/world/): one file per scenario,
 encoded as world_fuzz.cpp decodes its input (kept in step with it by hand). Each seed is a short
 program worth mutating from: a gas in each boundary, walls of every kind (a point, a zero-span arc,
-a full circle), drags to the nearest free place, inelastic balls with a stop condition, a save and
+a full circle), sensors (lines, arcs, discs, pockets that remove), drags to the nearest free place, inelastic balls with a stop condition, a save and
 load, invalid calls, and worlds under gravity. Run it from anywhere; it rewrites its seeds."""
 import pathlib
 import struct
@@ -45,6 +45,19 @@ def point(a):
 def arc(center, radius, start_fraction, kind):
     """kind: 1 zero span, 3 full circle, 5 a span of span_fraction (appended by the caller)."""
     return bytes([kind]) + position(*center) + word((radius - 0.5) / 8.0) + word(start_fraction)
+
+
+def sensor_segment(a, b, remove=False):
+    return bytes([2 | 8 | (16 if remove else 0)]) + position(*a) + position(*b)
+
+
+def sensor_arc(center, radius, start_fraction, span_fraction, remove=False):
+    return (bytes([5 | 8 | (16 if remove else 0)]) + position(*center) + word((radius - 0.5) / 8.0)
+            + word(start_fraction) + word(span_fraction))
+
+
+def sensor_disc(center, radius, remove=False):
+    return bytes([8 | 32 | (16 if remove else 0)]) + position(*center) + word((radius - 0.05) / 4.0)
 
 
 def add(x, y, speed_index=1, angle=0.1, radius_index=0, mass_index=0, restitution=0):
@@ -104,6 +117,18 @@ SEEDS = {
     "growth_in_box_with_walls": head(BOX, 0, growth=True)
     + walls(segment((1, 12), (12, 6)), arc((10, 8), 5.0, 0.5, 5) + word(0.5)) + gas(10, 1) + step(6)
     + bytes([SAVE]) + step(7) + add(10, 18, 4, 0.75) + step(7),
+    # Sensors: a line, an arc and a disc crossed by a gas (saved while balls are inside), pockets
+    # that remove balls falling into them, and growing balls swelling into a zone.
+    "sensors_box_gas": head(BOX) + walls(sensor_segment((1, 10), (19, 10)), sensor_arc((10, 10), 5.0, 0.2, 0.6),
+                                         sensor_disc((5, 15), 2.0), segment((2, 2), (6, 6)))
+    + gas(12, 3) + step(4) + bytes([SAVE]) + step(5) + collisions(8, True) + bytes([MOVE, 0]) + position(5, 15)
+    + bytes([0]) + step(2),
+    "sensor_pockets_gravity": head(BOX, 0, gravity=True) + walls(sensor_disc((2, 2), 0.5, True),
+                                                                sensor_disc((18, 2), 0.5, True),
+                                                                sensor_segment((1, 8), (19, 8)))
+    + gas(12, 2) + step(6) + bytes([SAVE]) + step(7) + step(7),
+    "sensors_growth": head(BOX, 0, growth=True) + walls(sensor_disc((10, 10), 3.0), sensor_segment((3, 3), (17, 3)))
+    + gas(10, 1) + step(6) + bytes([SAVE]) + step(7),
 }
 
 

@@ -3,7 +3,8 @@
 // (refused or to the nearest free place), set velocities, step with random dt,
 // run_until, run_collisions with small counts (with and without a time limit), a stop condition,
 // contact recording on and off, and a save → load round trip; in an open world, a box and a
-// periodic cell, with segments and arcs in the first two. After every call it checks:
+// periodic cell, with segments and arcs in the first two, and sensors (segments, arcs and discs,
+// some removing the balls that enter). After every call it checks:
 // - the only exception is carom::InvalidArgument, thrown exactly when an argument the harness
 //   knows to be invalid was passed, or when a placement overlaps (then the world is unchanged);
 // - World::audit finds no overlap and no ball outside the box; every number is finite;
@@ -13,7 +14,10 @@
 // - a loaded world saves to the same bytes and, given the next call, agrees bit for bit with
 //   the world it was saved from;
 // - the queries (a ray's every hit, a ball cast, a circle and a box from each of a few balls)
-//   find what a scan of every ball and wall finds.
+//   find what a scan of every ball and wall finds;
+// - sensors' enters and exits lie in the call's time range in time order, alternate for each
+//   ball and sensor, agree with balls_in_sensor, and a ball recorded inside a sensor overlaps
+//   it (one recorded outside does not, where its filter meets the sensor).
 //
 // Input bytes, read front to back (missing bytes read as 0, so every input is valid):
 //   byte 0: boundary (open, box, periodic), the world's restitution and gravity (none, or, in an
@@ -34,6 +38,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -42,6 +47,7 @@
 
 #include "carom/bounce.hpp"
 #include "carom/error.hpp"
+#include "carom/geometry.hpp"
 #include "carom/sweep.hpp"
 #include "carom/world.hpp"
 
@@ -50,7 +56,10 @@ namespace {
 using carom::BallDef;
 using carom::BallId;
 using carom::Boundary;
+using carom::Segment;
+using carom::SensorAction;
 using carom::Vec2;
+using carom::WallId;
 using carom::World;
 using carom::WorldDef;
 
@@ -231,13 +240,28 @@ class Harness {
     const std::size_t count = in_.byte() % (kMaxWalls + 1);
     for (std::size_t i = 0; i < count; ++i) {
       const std::uint8_t kind = in_.byte();
+      // Bit 3: a sensor (bit 4: one that removes the balls entering it; bit 5: a disc).
+      const bool sensor = (kind & 8) != 0;
+      const SensorAction action =
+          (kind & 16) != 0 ? SensorAction::remove_ball : SensorAction::report;
       try {
-        if ((kind & 1) == 0) {
+        if (sensor && (kind & 32) != 0) {
+          const Vec2 c = position(in_);
+          const double radius = 0.05 + 4.0 * in_.unit();
+          CAROM_TRACE("add_sensor(disc {%.17g, %.17g}, %.17g, %d)\n", c.x, c.y, radius,
+                      static_cast<int>(action));
+          world().add_sensor(carom::Ball{c, radius}, action);
+        } else if ((kind & 1) == 0) {
           const Vec2 a = position(in_);
           // A zero-length segment (a point) now and then.
           const Vec2 b = (kind & 6) == 0 ? a : position(in_);
-          CAROM_TRACE("add_segment({%.17g, %.17g}, {%.17g, %.17g})\n", a.x, a.y, b.x, b.y);
-          world().add_segment({a, b});
+          CAROM_TRACE("add_%s({%.17g, %.17g}, {%.17g, %.17g})\n", sensor ? "sensor" : "segment",
+                      a.x, a.y, b.x, b.y);
+          if (sensor) {
+            world().add_sensor(Segment{a, b}, action);
+          } else {
+            world().add_segment({a, b});
+          }
         } else {
           const Vec2 c = position(in_);
           const double radius = 0.5 + 8.0 * in_.unit();
@@ -246,9 +270,13 @@ class Harness {
           const double span = (kind & 6) == 0   ? 0.0
                               : (kind & 6) == 2 ? 2.0 * std::numbers::pi
                                                 : 2.0 * std::numbers::pi * in_.unit();
-          CAROM_TRACE("add_arc({%.17g, %.17g}, %.17g, %.17g, %.17g)\n", c.x, c.y, radius, start,
-                      start + span);
-          world().add_arc({c, radius, start, start + span});
+          CAROM_TRACE("add_%s({%.17g, %.17g}, %.17g, %.17g, %.17g)\n", sensor ? "sensor" : "arc",
+                      c.x, c.y, radius, start, start + span);
+          if (sensor) {
+            world().add_sensor(carom::Arc{c, radius, start, start + span}, action);
+          } else {
+            world().add_arc({c, radius, start, start + span});
+          }
         }
       } catch (const carom::InvalidArgument& error) {
         fail("a valid wall was refused:", error.what());
@@ -355,6 +383,7 @@ class Harness {
     if (id.is_null()) return;
     CAROM_TRACE("remove_ball(%u)\n", id.index);
     world().remove_ball(id);
+    forget_sensor_pairs(id);
     check(!world().contains(id), "a removed ball is still there");
     try {
       (void)world().position(id);
@@ -495,12 +524,18 @@ class Harness {
       check(std::abs(carom::length(c.normal) - 1.0) < 1e-9, "a contact normal is not unit");
       if (i > 0) check(contacts[i - 1].time <= c.time, "contacts out of time order");
     }
+    check_sensor_events(start, end);
+    // A ball placed into or out of a sensor between runs changes at the next run's start: the
+    // states agree with the places once a run has passed that instant.
+    sensors_settled_ = end > start;
     over_budget_ = world().stopped_early() && world().collision_count() >= kMaxContacts;
     if (over_budget_) CAROM_TRACE("stopped by the contact budget at t = %.17g\n", world().time());
     if (twin_) {
       call(*twin_);
       check(same_bits(snapshot(*twin_), snapshot(world())),
             "a loaded world diverged from the world it was saved from");
+      check(twin_->sensor_events().size() == world().sensor_events().size(),
+            "a loaded world recorded other sensor events");
       twin_.reset();
     }
   }
@@ -664,6 +699,89 @@ class Harness {
 
   void reset_energy() { energy_ = world().kinetic_energy() + world().potential_energy(); }
 
+  void forget_sensor_pairs(BallId id) {
+    for (auto pair = inside_.begin(); pair != inside_.end();) {
+      pair = pair->first == id.index ? inside_.erase(pair) : std::next(pair);
+    }
+  }
+
+  // A call's sensor events, against the states the harness follows.
+  void check_sensor_events(double start, double end) {
+    double previous = start;
+    for (const carom::SensorEvent& e : world().sensor_events()) {
+      check(e.time >= previous && e.time <= end, "a sensor event out of order or range");
+      previous = e.time;
+      check(world().sensor(e.sensor).has_value(), "a sensor event names no sensor");
+      const std::pair key{e.ball.index, e.sensor};
+      const bool enter = e.kind == carom::SensorEventKind::enter;
+      check(enter != inside_.contains(key), "enters and exits do not alternate");
+      if (enter) {
+        inside_.insert(key);
+      } else {
+        inside_.erase(key);
+      }
+      if (e.removed) {
+        check(enter && *world().sensor(e.sensor) == SensorAction::remove_ball,
+              "a ball removed by a sensor that does not remove");
+        check(!world().contains(e.ball), "a ball removed by a sensor is still there");
+        forget_sensor_pairs(e.ball);
+        removed_ = true;
+      }
+    }
+    for (WallId k = 0; k < world().wall_count(); ++k) {
+      if (!world().sensor(k)) continue;
+      const auto expected = static_cast<std::size_t>(std::count_if(
+          inside_.begin(), inside_.end(), [k](const auto& key) { return key.second == k; }));
+      const std::vector<BallId> recorded = world().balls_in_sensor(k);
+      for (const BallId id : recorded) {
+        check(inside_.contains({id.index, k}), "balls_in_sensor lists a ball never entered");
+      }
+      check(recorded.size() == expected, "balls_in_sensor misses a ball that entered");
+    }
+  }
+
+  // Where the harness's own distance says each ball is, against the recorded states.
+  void check_sensor_geometry() {
+    const World& w = world();
+    for (WallId k = 0; k < w.wall_count(); ++k) {
+      if (!w.sensor(k)) continue;
+      const auto shape = w.wall(k);
+      for (const BallId id : w.balls()) {
+        const Vec2 p = w.position(id);
+        double distance = 0.0;
+        if (const auto* s = std::get_if<Segment>(&shape)) {
+          distance = carom::length(carom::nearest_point(*s, p) - p);
+        } else if (const auto* disc = std::get_if<carom::Ball>(&shape)) {
+          distance = std::max(0.0, carom::length(p - disc->center) - disc->radius);
+        } else {
+          const auto& arc = std::get<carom::Arc>(shape);
+          const auto at = [&](double angle) {
+            return arc.center + Vec2{std::cos(angle), std::sin(angle)} * arc.radius;
+          };
+          distance = std::min(carom::length(p - at(arc.start_angle)),
+                              carom::length(p - at(arc.end_angle)));
+          const Vec2 offset = p - arc.center;
+          const double turn = 2.0 * std::numbers::pi;
+          const double from_start = std::fmod(
+              std::fmod(std::atan2(offset.y, offset.x) - arc.start_angle, turn) + turn, turn);
+          if (from_start <= arc.end_angle - arc.start_angle ||
+              arc.end_angle - arc.start_angle >= turn) {
+            distance = std::min(distance, std::abs(carom::length(offset) - arc.radius));
+          }
+        }
+        const double r = w.radius(id);
+        // The positions' rounding and the sensors' margin (2^-40 of the coordinates), far
+        // below this.
+        const double slack = 1e-7 * (std::abs(p.x) + std::abs(p.y) + r + kSide);
+        if (inside_.contains({id.index, k})) {
+          check(distance <= r + slack, "a ball recorded inside a sensor is clear of it");
+        } else if (carom::should_collide(w.filter(id), w.wall_filter(k))) {
+          check(distance >= r - slack, "a ball recorded outside a sensor overlaps it");
+        }
+      }
+    }
+  }
+
   void check_invariants() {
     World& w = world();
     if (const auto problem = w.audit()) fail("audit:", *problem);
@@ -683,8 +801,10 @@ class Harness {
     check(std::isfinite(energy), "the energy is not finite");
     const double scale = w.kinetic_energy() + std::abs(w.potential_energy());
     const double allowed = kEnergyTolerance * std::max({scale, std::abs(energy_), 1e-300});
-    if (driven_) {
-      // Nothing to check: the immovable ball's motion is a source of energy.
+    if (driven_ || removed_) {
+      // Nothing to check: the immovable ball's motion is a source of energy, or a sensor
+      // removed a ball and its energy with it.
+      removed_ = false;
     } else if (elastic_) {
       check(std::abs(energy - energy_) <= allowed, "an elastic world changed its energy");
     } else {
@@ -707,6 +827,8 @@ class Harness {
     double fastest = 0.0;
     for (const BallId id : ids) fastest = std::max(fastest, carom::length(w.velocity(id)));
     if (std::abs(w.time()) * std::numeric_limits<double>::epsilon() * fastest > 1e-8) return;
+    if (sensors_settled_) check_sensor_geometry();
+    sensors_settled_ = false;
     const bool periodic = def_.boundary == Boundary::periodic;
     // Every place ball `id` may be met at within `reach` of the box [lo, hi].
     const auto copies = [&](BallId id, Vec2 lo, Vec2 hi, double reach) {
@@ -761,6 +883,7 @@ class Harness {
         }
       }
       for (carom::WallId wall = 0; wall < w.wall_count(); ++wall) {
+        if (w.sensor(wall)) continue;  // queries do not see sensors
         const auto shape = w.wall(wall);
         const carom::Impact hit =
             std::holds_alternative<carom::Segment>(shape)
@@ -828,10 +951,14 @@ class Harness {
   std::uint32_t interrupt_every_ = 0;
   bool over_budget_ = false;  // the world has resolved kMaxContacts contacts: the input ends
   bool elastic_ = true;
-  bool driven_ = false;  // an immovable ball has moved: energy is not a conserved quantity
-  bool jammed_ = false;  // a run refused jammed balls or a stalled time: the input ends
-  bool slowed_ = false;  // set_velocity slowed a ball more than 16 times: the input ends
+  bool driven_ = false;           // an immovable ball has moved: energy is not a conserved quantity
+  bool jammed_ = false;           // a run refused jammed balls or a stalled time: the input ends
+  bool slowed_ = false;           // set_velocity slowed a ball more than 16 times: the input ends
+  bool removed_ = false;          // a sensor removed a ball in the last call
+  bool sensors_settled_ = false;  // the last call ran past its start
   double energy_ = 0.0;
+  // The (ball index, sensor) pairs inside, as the sensor events told.
+  std::set<std::pair<std::uint32_t, WallId>> inside_;
 };
 
 }  // namespace

@@ -21,9 +21,11 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 #include "carom/filter.hpp"
+#include "carom/sensor.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
 #include "carom/world.hpp"
@@ -94,6 +96,16 @@ struct ScenePocket {
   double radius = 1.0;  // > 0
 };
 
+// A sensor (World::add_sensor, carom/sensor.hpp): a segment, an arc or a disc that balls pass
+// through, each enter and exit recorded; with SensorAction::remove_ball the ball that enters is
+// removed. Balls may be placed over it.
+struct SceneSensor {
+  std::optional<std::string> name;  // unique among balls, pockets and sensors when given
+  std::variant<Segment, Arc, Ball> shape;
+  SensorAction action = SensorAction::report;
+  CollisionFilter filter;  // which balls it sees ("filter" in JSON)
+};
+
 enum class GeneratorPlacement : std::uint8_t {
   lattice,  // a triangular lattice spread over the region (periodic if the region is the cell)
   random,   // uniform random positions, each ball tried until it overlaps nothing placed before
@@ -160,6 +172,7 @@ struct Scene {
   std::vector<CollisionFilter> segment_filters;
   std::vector<CollisionFilter> arc_filters;
   std::vector<ScenePocket> pockets;
+  std::vector<SceneSensor> sensors;
   std::vector<SceneGenerator> generators;
   std::optional<SceneThermostat> thermostat;  // none: the runs keep the energy they have
 };
@@ -190,12 +203,19 @@ void save_scene(const Scene& scene, const std::filesystem::path& path);
 // A world built from a scene, and how to find the scene's balls in it.
 struct SceneWorld {
   World world;
-  Scene scene;                  // the scene it was built from, generators expanded into balls
-  std::vector<BallId> balls;    // balls[i] is scene.balls[i] (null once removed by a pocket)
-  std::vector<BallId> pockets;  // pockets[k] is scene.pockets[k]
+  Scene scene;  // the scene it was built from, generators expanded into balls
+  // balls[i] is scene.balls[i] (null once removed by a pocket or a sensor)
+  std::vector<BallId> balls;
+  std::vector<BallId> pockets;                      // pockets[k] is scene.pockets[k]
   std::unordered_map<std::string, BallId> by_name;  // named balls and pockets
   double start_time = 0.0;                          // scene time when the world's clock read 0
   double thermostat_work = 0.0;  // Σ of the thermostat's changes of kinetic energy so far
+  // sensors[k] is scene.sensors[k]: the world's last scene.sensors.size() walls.
+  std::vector<WallId> sensors;
+  // The sensors' enters and exits during the last step_scene / run_scene_until /
+  // run_scene_collisions, in order (world times; contacts_before is the event's place in the
+  // call's `contacts` vector: the index of the contact after it).
+  std::vector<SensorEvent> sensor_events;
 
   // The scene's clock now: start_time + world.time().
   [[nodiscard]] double time() const noexcept { return start_time + world.time(); }
@@ -203,8 +223,8 @@ struct SceneWorld {
   [[nodiscard]] std::optional<std::size_t> index_of(BallId id) const;
 };
 
-// Builds the world (walls in order: segments, then polylines' segments, then arcs, so wall ids
-// follow the scene). Throws SceneError for a scene the world refuses.
+// Builds the world (walls in order: segments, then polylines' segments, then arcs, then sensors,
+// so wall ids follow the scene). Throws SceneError for a scene the world refuses.
 [[nodiscard]] SceneWorld make_world(const Scene& scene);
 
 // The stop condition make_world gives a world with pockets: a run ends right after each contact
@@ -251,6 +271,7 @@ struct SceneSummary {
   std::size_t immovable = 0;
   std::size_t walls = 0;  // segments, polyline segments and arcs
   std::size_t pockets = 0;
+  std::size_t sensors = 0;
   double kinetic_energy = 0.0;
   // −Σ m·gravity·p over movable balls, as World::potential_energy (0 without gravity).
   double potential_energy = 0.0;

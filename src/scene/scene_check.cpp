@@ -67,6 +67,9 @@ void check_names(const Scene& scene) {
   for (std::size_t i = 0; i < scene.pockets.size(); ++i) {
     note(scene.pockets[i].name, {std::string("pockets"), i});
   }
+  for (std::size_t i = 0; i < scene.sensors.size(); ++i) {
+    note(scene.sensors[i].name, {std::string("sensors"), i});
+  }
   // A generator names its balls NAME#0, NAME#1, ...: two generators of one name, or a ball
   // named like one of its balls, would give two balls one name (and a saved scene that does
   // not load).

@@ -190,11 +190,8 @@ ScenePolyline read_polyline(const JsonSource& source, const nlohmann::json& json
   return polyline;
 }
 
-Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
-             std::vector<CollisionFilter>& filters) {
-  const ObjectFields f(source, json, path,
-                       {"center", "radius", "start_angle", "end_angle", "filter"});
-  filters.push_back(read_filter(f));
+// An arc's fields (center, radius, start_angle, end_angle), checked as the world checks them.
+Arc arc_fields(const ObjectFields& f) {
   Arc arc;
   arc.center = f.vector("center");
   arc.radius = positive(f, "radius", 1.0);
@@ -215,6 +212,52 @@ Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPat
            "end_angle - start_angle must lie in [0, 2*pi] (radians, counter-clockwise)");
   }
   return arc;
+}
+
+Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
+             std::vector<CollisionFilter>& filters) {
+  const ObjectFields f(source, json, path,
+                       {"center", "radius", "start_angle", "end_angle", "filter"});
+  filters.push_back(read_filter(f));
+  return arc_fields(f);
+}
+
+// A sensor: its "shape" names the fields that give it.
+SceneSensor read_sensor(const JsonSource& source, const nlohmann::json& json,
+                        const JsonPath& path) {
+  const ObjectFields any(source, json, path,
+                         {"name", "shape", "action", "filter", "a", "b", "center", "radius",
+                          "start_angle", "end_angle"});
+  const std::string shape = any.optional_string("shape").value_or("");
+  if (shape != "segment" && shape != "arc" && shape != "disc") {
+    any.fail("shape", "must be \"segment\", \"arc\" or \"disc\"");
+  }
+  // Only the fields of its shape.
+  const ObjectFields f =
+      shape == "segment"
+          ? ObjectFields(source, json, path, {"name", "shape", "action", "filter", "a", "b"})
+      : shape == "arc" ? ObjectFields(source, json, path,
+                                      {"name", "shape", "action", "filter", "center", "radius",
+                                       "start_angle", "end_angle"})
+                       : ObjectFields(source, json, path,
+                                      {"name", "shape", "action", "filter", "center", "radius"});
+  SceneSensor sensor;
+  sensor.name = f.optional_string("name");
+  if (shape == "segment") {
+    sensor.shape = Segment{f.vector("a"), f.vector("b")};
+  } else if (shape == "arc") {
+    sensor.shape = arc_fields(f);
+  } else {
+    sensor.shape = Ball{f.vector("center"), positive(f, "radius", 1.0)};
+  }
+  const std::string action = f.optional_string("action").value_or("report");
+  if (action == "remove_ball") {
+    sensor.action = SensorAction::remove_ball;
+  } else if (action != "report") {
+    f.fail("action", "must be \"report\" or \"remove_ball\"");
+  }
+  sensor.filter = read_filter(f);
+  return sensor;
 }
 
 ScenePocket read_pocket(const JsonSource& source, const nlohmann::json& json,
@@ -342,9 +385,10 @@ nlohmann::json parse_json(const JsonSource& source) {
 Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   const JsonSource source(json_text, source_name);
   const nlohmann::json json = parse_json(source);
-  const ObjectFields top(source, json, {},
-                         {"carom_scene", "description", "units", "world", "time", "balls",
-                          "segments", "polylines", "arcs", "pockets", "generators", "thermostat"});
+  const ObjectFields top(
+      source, json, {},
+      {"carom_scene", "description", "units", "world", "time", "balls", "segments", "polylines",
+       "arcs", "pockets", "sensors", "generators", "thermostat"});
   if (top.has("carom_scene")) {
     const std::uint64_t version = top.whole_number("carom_scene");
     if (version != kSceneFormatVersion) {
@@ -375,6 +419,7 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   if (all_default(scene.segment_filters)) scene.segment_filters.clear();
   if (all_default(scene.arc_filters)) scene.arc_filters.clear();
   read_array(top, "pockets", scene.pockets, read_pocket);
+  read_array(top, "sensors", scene.sensors, read_sensor);
   read_array(top, "generators", scene.generators, read_generator);
   scene.thermostat = read_thermostat(top);
   if (scene.balls.size() > kMaxSceneBalls) {

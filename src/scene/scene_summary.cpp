@@ -21,6 +21,7 @@ SceneSummary summarize(const Scene& scene, std::span<const SceneBall> balls) {
   SceneSummary s;
   s.balls = balls.size();
   s.pockets = scene.pockets.size();
+  s.sensors = scene.sensors.size();
   s.walls = scene_detail::scene_walls(scene).size();
   double largest = 0.0;
   for (const SceneBall& b : balls) {

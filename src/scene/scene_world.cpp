@@ -47,9 +47,21 @@ void pot(SceneWorld& sw, std::vector<PottedBall>* potted) {
   }
 }
 
-void append(const World& world, std::vector<ContactEvent>* contacts) {
+// A world run's contacts onto `contacts`, and its sensor events onto the scene world's, each
+// placed among the call's contacts so far.
+void append(SceneWorld& sw, std::vector<ContactEvent>* contacts) {
+  const std::size_t before = contacts != nullptr ? contacts->size() : 0;
+  for (SensorEvent event : sw.world.sensor_events()) {
+    event.contacts_before += before;
+    sw.sensor_events.push_back(event);
+    if (event.removed) {
+      // Gone, as a potted ball is: its scene entry reads null.
+      const auto gone = std::find(sw.balls.begin(), sw.balls.end(), event.ball);
+      if (gone != sw.balls.end()) *gone = BallId{};
+    }
+  }
   if (contacts == nullptr) return;
-  const std::span<const ContactEvent> now = world.contacts();
+  const std::span<const ContactEvent> now = sw.world.contacts();
   contacts->insert(contacts->end(), now.begin(), now.end());
 }
 
@@ -77,7 +89,10 @@ SceneWorld make_world(const Scene& scene) {
                 {},
                 {},
                 {},
-                0.0};
+                0.0,
+                0.0,
+                {},
+                {}};
   sw.scene = scene;
   sw.scene.balls = balls;
   sw.scene.generators.clear();
@@ -110,6 +125,18 @@ SceneWorld make_world(const Scene& scene) {
     }
   } catch (const InvalidArgument& error) {
     throw world_refused("segments", error);
+  }
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
+    const SceneSensor& sensor = scene.sensors[k];
+    try {
+      const WallId wall =
+          std::visit([&](const auto& shape) { return sw.world.add_sensor(shape, sensor.action); },
+                     sensor.shape);
+      sw.world.set_wall_filter(wall, sensor.filter);
+      sw.sensors.push_back(wall);
+    } catch (const InvalidArgument& error) {
+      throw world_refused("sensors[" + std::to_string(k) + "]", error);
+    }
   }
   sw.balls.reserve(balls.size());
   sw.world.reserve(balls.size() + scene.pockets.size());
@@ -155,7 +182,7 @@ void advance_until(SceneWorld& sw, double time, std::vector<ContactEvent>* conta
                    std::vector<PottedBall>* potted) {
   for (;;) {
     static_cast<void>(sw.world.run_until(time));
-    append(sw.world, contacts);
+    append(sw, contacts);
     if (!sw.world.stopped_early()) break;
     pot(sw, potted);
     if (sw.world.time() >= time) break;
@@ -168,7 +195,7 @@ std::uint64_t advance_collisions(SceneWorld& sw, std::uint64_t count,
   std::uint64_t done = 0;
   while (done < count) {
     done += sw.world.run_collisions(count - done, time_limit);
-    append(sw.world, contacts);
+    append(sw, contacts);
     if (!sw.world.stopped_early()) break;
     pot(sw, potted);
   }
@@ -231,10 +258,11 @@ std::uint64_t collisions_with_thermostat(SceneWorld& sw, std::uint64_t count,
 
 double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,
                   std::vector<PottedBall>* potted) {
+  sw.sensor_events.clear();
   const double start = sw.world.time();
   if (sw.pockets.empty() && !sw.scene.thermostat) {
     const double advanced = sw.world.step(dt);
-    append(sw.world, contacts);
+    append(sw, contacts);
     return advanced;
   }
   return run_scene_until(sw, start + dt, contacts, potted);
@@ -242,6 +270,7 @@ double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts
 
 double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
                        std::vector<PottedBall>* potted) {
+  sw.sensor_events.clear();
   const double start = sw.world.time();
   if (!sw.scene.thermostat) {
     advance_until(sw, time, contacts, potted);
@@ -270,6 +299,7 @@ double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* c
 std::uint64_t run_scene_collisions(SceneWorld& sw, std::uint64_t count,
                                    std::vector<ContactEvent>* contacts,
                                    std::vector<PottedBall>* potted, double time_limit) {
+  sw.sensor_events.clear();
   if (!sw.scene.thermostat) return advance_collisions(sw, count, contacts, potted, time_limit);
   return collisions_with_thermostat(sw, count, contacts, potted, time_limit);
 }

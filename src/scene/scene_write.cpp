@@ -185,6 +185,27 @@ std::string to_json_text(const Scene& scene) {
     if (p.name) line.add("name", str(*p.name));
     return line.add("position", vec(p.position)).add("radius", num(p.radius)).done();
   });
+  write_array(out, "sensors", scene.sensors, [&](const SceneSensor& sensor) {
+    Line line;
+    if (sensor.name) line.add("name", str(*sensor.name));
+    if (const auto* s = std::get_if<Segment>(&sensor.shape)) {
+      line.add("shape", str("segment")).add("a", vec(s->a)).add("b", vec(s->b));
+    } else if (const auto* a = std::get_if<Arc>(&sensor.shape)) {
+      line.add("shape", str("arc"))
+          .add("center", vec(a->center))
+          .add("radius", num(a->radius))
+          .add("start_angle", num(a->start_angle))
+          .add("end_angle", num(a->end_angle));
+    } else {
+      const Ball& disc = std::get<Ball>(sensor.shape);
+      line.add("shape", str("disc"))
+          .add("center", vec(disc.center))
+          .add("radius", num(disc.radius));
+    }
+    if (sensor.action == SensorAction::remove_ball) line.add("action", str("remove_ball"));
+    add_filter(line, sensor.filter);
+    return line.done();
+  });
   if (scene.thermostat) {
     Line thermostat;
     thermostat.add("temperature", num(scene.thermostat->temperature));

@@ -107,6 +107,34 @@ TEST(RunCommand, EventsAsJsonLinesIncludingPotting) {
   EXPECT_EQ(stats["balls_at_end"].get<std::size_t>(), 16U - potted);
 }
 
+TEST(RunCommand, EventsIncludeSensorsInOrderAndAPocketSensorRemovesTheBall) {
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "gate.json", R"({
+    "world": {"boundary": "box", "lower": [0, 0], "upper": [20, 10]},
+    "balls": [{"position": [2, 5], "velocity": [4, 0], "radius": 0.5},
+              {"position": [2, 2], "velocity": [0, 0], "radius": 0.5}],
+    "sensors": [{"name": "gate", "shape": "segment", "a": [6, 0], "b": [6, 10]},
+                {"shape": "disc", "center": [17, 5], "radius": 0.3, "action": "remove_ball"}]})");
+  const std::string events = (dir / "events.jsonl").string();
+  const ToolRun run =
+      run_carom({"run", scene, "--until", "5", "--events", events, "--stats", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto stats = nlohmann::json::parse(run.out);
+  EXPECT_EQ(stats["balls_at_end"].get<std::size_t>(), 1U);
+  const std::vector<std::string> lines = lines_of(read_file(events));
+  ASSERT_EQ(lines.size(), 3U);  // no contact: the gate's enter and exit, the pocket's enter
+  const auto enter = nlohmann::json::parse(lines[0]);
+  EXPECT_EQ(enter["kind"], "sensor_enter");
+  EXPECT_EQ(enter["ball"], 0);
+  EXPECT_EQ(enter["sensor"], 0);
+  EXPECT_NEAR(enter["time"].get<double>(), (5.5 - 2.0) / 4.0, 1e-11);
+  EXPECT_EQ(nlohmann::json::parse(lines[1])["kind"], "sensor_exit");
+  const auto potted = nlohmann::json::parse(lines[2]);
+  EXPECT_EQ(potted["sensor"], 1);
+  EXPECT_EQ(potted["removed"], true);
+  EXPECT_NEAR(potted["time"].get<double>(), (16.2 - 2.0) / 4.0, 1e-11);
+}
+
 TEST(RunCommand, SaveThenContinueMatchesOneLongRun) {
   const ScratchDir dir;
   const std::string middle = (dir / "middle.json").string();

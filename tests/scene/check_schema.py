@@ -34,12 +34,23 @@ refused = {
     "rest height as a word": {"world": {"rest_height": "low"}},
     "generator with radius and packing fraction": {
         "generators": [{"count": 3, "radius": 1, "packing_fraction": 0.1}]},
+    "sensor of an unknown shape": {"sensors": [{"shape": "square", "center": [0, 0]}]},
+    "disc sensor with a segment's field": {"sensors": [{"shape": "disc", "center": [0, 0], "a": [1, 1]}]},
+    "sensor with an unknown action": {"sensors": [{"shape": "segment", "a": [0, 0], "b": [1, 0], "action": "eat"}]},
 }
 # And a scene with gravity and a rest height that carom reads is valid under it.
 if not validator.is_valid({"world": {"boundary": "open", "gravity": [0, -9.81]}}):
     failures.append("the schema refuses a scene with gravity that carom reads")
 if not validator.is_valid({"world": {"gravity": [0, -9.81], "rest_height": 0.01}}):
     failures.append("the schema refuses a scene with a rest height that carom reads")
+
+# Sensors of each shape that carom reads.
+if not validator.is_valid({"sensors": [
+        {"name": "gate", "shape": "segment", "a": [0, 0], "b": [1, 0]},
+        {"shape": "arc", "center": [0, 0], "radius": 2, "start_angle": 0, "end_angle": 1},
+        {"shape": "disc", "center": [5, 5], "radius": 0.5, "action": "remove_ball",
+         "filter": {"category": 2}}]}):
+    failures.append("the schema refuses sensors that carom reads")
 
 for name, scene in refused.items():
     if validator.is_valid(scene):

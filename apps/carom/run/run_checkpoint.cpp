@@ -285,8 +285,20 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
   }
   // World::save leaves out the stop condition (a function): make_world's again.
   if (!pockets.empty()) stop_at_pocket_contacts(*world, pockets);
-  return {SceneWorld{std::move(*world), std::move(scene), std::move(balls), std::move(pockets),
-                     std::move(by_name), start_time},
+  // The scene's sensors are the world's last walls (make_world adds them last).
+  std::vector<WallId> sensors;
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
+    sensors.push_back(static_cast<WallId>(world->wall_count() - scene.sensors.size() + k));
+  }
+  return {SceneWorld{std::move(*world),
+                     std::move(scene),
+                     std::move(balls),
+                     std::move(pockets),
+                     std::move(by_name),
+                     start_time,
+                     0.0,
+                     std::move(sensors),
+                     {}},
           std::move(progress)};
 }
 

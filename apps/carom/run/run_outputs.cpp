@@ -122,7 +122,26 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
     if (const auto i = directory.ball_index(id)) return *i;
     return nullptr;
   };
-  for (const ContactEvent& c : contacts) {
+  std::size_t next_sensor_event = 0;
+  // The sensor events placed before contact `before` (all that are left for contacts.size()).
+  const auto write_sensor_events = [&](std::size_t before) {
+    for (; next_sensor_event < built.sensor_events.size() &&
+           built.sensor_events[next_sensor_event].contacts_before <= before;
+         ++next_sensor_event) {
+      const SensorEvent& e = built.sensor_events[next_sensor_event];
+      nlohmann::ordered_json line;
+      line["time"] = built.start_time + e.time;
+      line["kind"] = e.kind == SensorEventKind::enter ? "sensor_enter" : "sensor_exit";
+      line["ball"] = index_json(e.ball);
+      // The scene's sensors are the world's last walls, numbered from 0 among themselves.
+      line["sensor"] = e.sensor - (built.world.wall_count() - built.scene.sensors.size());
+      if (e.removed) line["removed"] = true;
+      buffer_ += line.dump() + "\n";
+    }
+  };
+  for (std::size_t n = 0; n < contacts.size(); ++n) {
+    write_sensor_events(n);
+    const ContactEvent& c = contacts[n];
     nlohmann::ordered_json line;
     line["time"] = built.start_time + c.time;
     const auto pocket_a = directory.pocket_index(c.a);
@@ -151,6 +170,7 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
     line["impulse"] = c.impulse;
     buffer_ += line.dump() + "\n";
   }
+  write_sensor_events(contacts.size());
   out_.write(buffer_);
 }
 

@@ -56,6 +56,7 @@ class EventWriter {
  public:
   [[nodiscard]] std::optional<std::string> open(const std::string& path) { return out_.open(path); }
   // wall_offset: how many walls the world's boundary added before the scene's own (4 for a box).
+  // The sensors' enters and exits (built.sensor_events) go in among the contacts, in order.
   void write(const std::vector<ContactEvent>& contacts, const BallDirectory& directory,
              const SceneWorld& built, std::size_t wall_offset);
   [[nodiscard]] std::optional<std::string> commit() { return out_.commit(); }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -327,6 +328,24 @@ Placement placement_of(const std::string& name) {
   throw py::value_error("placement must be \"refuse\" or \"nearest_free\", not \"" + name + "\"");
 }
 
+SensorAction sensor_action_of(const std::string& name) {
+  if (name == "report") return SensorAction::report;
+  if (name == "remove_ball") return SensorAction::remove_ball;
+  throw py::value_error("action must be \"report\" or \"remove_ball\", not \"" + name + "\"");
+}
+const char* sensor_action_name(SensorAction action) {
+  return action == SensorAction::remove_ball ? "remove_ball" : "report";
+}
+
+std::string sensor_event_repr(const SensorEvent& e) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "<carom.SensorEvent " << (e.kind == SensorEventKind::enter ? "enter" : "exit")
+      << " of ball " << id_number(e.ball) << " in sensor " << e.sensor << " at time " << e.time
+      << (e.removed ? ", removed" : "") << ">";
+  return out.str();
+}
+
 }  // namespace
 
 py::array contacts_array(std::span<const ContactEvent> contacts) {
@@ -402,6 +421,23 @@ void bind_world(py::module_& m) {
   m.def("should_collide", &should_collide, py::arg("a"), py::arg("b"),
         "Whether two filters let their owners meet");
 
+  py::class_<SensorEvent>(m, "SensorEvent",
+                          "A ball entering or leaving a sensor (World.sensor_events), read-only")
+      .def_readonly("time", &SensorEvent::time, "When, exactly")
+      .def_property_readonly(
+          "kind",
+          [](const SensorEvent& e) { return e.kind == SensorEventKind::enter ? "enter" : "exit"; },
+          "\"enter\" or \"exit\"")
+      .def_property_readonly(
+          "ball", [](const SensorEvent& e) { return id_number(e.ball); },
+          "The ball's id (stale from this event on when removed)")
+      .def_readonly("sensor", &SensorEvent::sensor, "The sensor's wall id")
+      .def_readonly("removed", &SensorEvent::removed,
+                    "The sensor removed the ball (action \"remove_ball\"): no exit follows")
+      .def_readonly("contacts_before", &SensorEvent::contacts_before,
+                    "How many of the run's contacts (World.contacts) came before it")
+      .def("__repr__", &sensor_event_repr);
+
   py::class_<PyWorld>(m, "World",
                       "A world of moving balls, walls and arcs, advanced in exact event order")
       .def(py::init([](const std::string& boundary, Vec2 lower, Vec2 upper, double restitution,
@@ -473,9 +509,62 @@ void bind_world(py::module_& m) {
           [](PyWorld& w, Vec2 lower, Vec2 upper) { return w.world().add_box(lower, upper); },
           py::arg("lower"), py::arg("upper"),
           "Adds the four segments of a rectangle; returns the first one's wall id")
+      // ---- sensors ----
+      .def(
+          "add_segment_sensor",
+          [](PyWorld& w, Vec2 a, Vec2 b, const std::string& action) {
+            return w.world().add_sensor(Segment{a, b}, sensor_action_of(action));
+          },
+          py::arg("a"), py::arg("b"), py::arg("action") = "report",
+          "Adds a segment sensor from a to b, which balls pass through, recording their enters "
+          "and exits (sensor_events); action \"report\" or \"remove_ball\" (a pocket: the ball "
+          "that enters is removed); returns its wall id")
+      .def(
+          "add_arc_sensor",
+          [](PyWorld& w, Vec2 center, double radius, double start_angle, double end_angle,
+             const std::string& action) {
+            return w.world().add_sensor(Arc{center, radius, start_angle, end_angle},
+                                        sensor_action_of(action));
+          },
+          py::arg("center"), py::arg("radius"), py::arg("start_angle"), py::arg("end_angle"),
+          py::arg("action") = "report",
+          "Adds an arc sensor, counter-clockwise from start_angle to end_angle (radians); action "
+          "as in add_segment_sensor; returns its wall id")
+      .def(
+          "add_disc_sensor",
+          [](PyWorld& w, Vec2 center, double radius, const std::string& action) {
+            return w.world().add_sensor(Ball{center, radius}, sensor_action_of(action));
+          },
+          py::arg("center"), py::arg("radius"), py::arg("action") = "report",
+          "Adds a disc sensor (a ball enters it when it starts to overlap it); action as in "
+          "add_segment_sensor; returns its wall id")
+      .def(
+          "sensor",
+          [](const PyWorld& w, WallId wall) -> std::optional<std::string> {
+            const std::optional<SensorAction> action = w.world().sensor(wall);
+            if (!action) return std::nullopt;
+            return sensor_action_name(*action);
+          },
+          py::arg("wall"),
+          "What the sensor does, \"report\" or \"remove_ball\"; None for a wall that is no "
+          "sensor")
+      .def(
+          "balls_in_sensor",
+          [](const PyWorld& w, WallId wall) {
+            const std::vector<BallId> ids = w.world().balls_in_sensor(wall);
+            py::array_t<std::uint64_t> out(static_cast<py::ssize_t>(ids.size()));
+            auto view = out.mutable_unchecked<1>();
+            for (std::size_t i = 0; i < ids.size(); ++i) {
+              view(static_cast<py::ssize_t>(i)) = id_number(ids[i]);
+            }
+            return out;
+          },
+          py::arg("wall"),
+          "(K,) uint64: the ids of the balls inside the sensor (as of its last enter and exit), "
+          "in the order of ids")
       .def_property_readonly(
           "wall_count", [](const PyWorld& w) { return w.world().wall_count(); },
-          "The number of walls (segments and arcs, the boundary's box included)")
+          "The number of walls (segments, arcs and sensors, the boundary's box included)")
       // ---- advancing time ----
       .def(
           "step", [](PyWorld& w, double dt) { return w.run([&] { return w.world().step(dt); }); },
@@ -514,6 +603,14 @@ void bind_world(py::module_& m) {
           "The last run's contacts as a structured array (time, kind: 0 "
           "ball-ball 1 ball-wall, a, b, wall, point, normal, approach_speed, "
           "impulse)")
+      .def_property_readonly(
+          "sensor_events",
+          [](const PyWorld& w) {
+            const std::span<const SensorEvent> events = w.world().sensor_events();
+            return std::vector<SensorEvent>(events.begin(), events.end());
+          },
+          "The last run's sensor enters and exits, in order (a list of SensorEvent); always "
+          "recorded")
       // ---- state ----
       .def_property_readonly(
           "time", [](const PyWorld& w) { return w.world().time(); }, "The world's time")

@@ -70,9 +70,10 @@ struct World::Impl::RunGuard {
   // will come: after a stretch of events without one (a run with no end time only), each failed
   // proof doubling the stretch, so that proofs (O(N²)) stay rare.
   CAROM_ALWAYS_INLINE bool after_no_contact(const Event& event) {
-    const bool partner_gone =
-        event.kind == EventKind::ball_ball && !world.balls[event.partner].alive();
-    if (!partner_gone && world.time_too_coarse(event)) world.refuse_stalled(function, event);
+    // (A ball a sensor removed is gone too: nothing of it to measure.)
+    const bool gone = (event.kind == EventKind::ball_ball && !world.balls[event.partner].alive()) ||
+                      (event.kind == EventKind::ball_wall && !world.balls[event.owner].alive());
+    if (!gone && world.time_too_coarse(event)) world.refuse_stalled(function, event);
     return unbounded && ++without_contact >= next_proof;
   }
   void proof_failed() {
@@ -191,7 +192,6 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::moved_measurably(const Event& conta
   if (elapsed == kInfinity) return true;  // the run's first contact
   const auto moved = [&](std::uint32_t ball) {
     const BallSlot& b = balls[ball];
-    if (!b.alive()) return true;  // removed by a sensor: gone, which is progress
     // |x| + |y| bounds the length within a factor √2, which is all a threshold needs.
     const double travel = elapsed * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
     const double size = std::abs(b.position.x) + std::abs(b.position.y) + radius_of(ball);
@@ -205,7 +205,6 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::time_too_coarse(const Event& event)
   const double time_step = std::abs(time) * 0x1p-52;
   const auto coarse = [&](std::uint32_t ball) {
     const BallSlot& b = balls[ball];
-    if (!b.alive()) return false;  // removed by a sensor
     const double motion = time_step * (std::abs(b.velocity.x) + std::abs(b.velocity.y));
     return motion > kResolvableMotion * radius_of(ball);
   };
@@ -217,7 +216,10 @@ void World::Impl::refuse_endless(const char* function, std::uint64_t count,
   // Time stalls where its step to the next double would move the event's ball measurably: the
   // motion between events is then lost to rounding. Otherwise the balls are jammed.
   const double time_step = std::nextafter(time, kInfinity) - time;
-  if (moved_measurably(last, time_step)) refuse_stalled(function, last);
+  // (A ball a sensor removed has nothing left to measure.)
+  const bool gone = !balls[last.owner].alive() ||
+                    (last.kind == EventKind::ball_ball && !balls[last.partner].alive());
+  if (!gone && moved_measurably(last, time_step)) refuse_stalled(function, last);
   refuse_never_ending(
       function, std::to_string(count) + " events at t = " + carom::number_text(time),
       "their contacts come at one instant (or a rounding apart) without end", last,

@@ -56,6 +56,7 @@ std::vector<Segment> DrawnWorld::segments() const {
   std::vector<Segment> segments;
   const World& world = scene_world_.world;
   for (WallId id = first_own_wall(); id < world.wall_count(); ++id) {
+    if (world.sensor(id)) continue;  // balls pass through sensors: not drawn as walls
     const auto shape = world.wall(id);
     if (const auto* segment = std::get_if<Segment>(&shape); segment != nullptr) {
       segments.push_back(*segment);
@@ -68,6 +69,7 @@ std::vector<Arc> DrawnWorld::arcs() const {
   std::vector<Arc> arcs;
   const World& world = scene_world_.world;
   for (WallId id = first_own_wall(); id < world.wall_count(); ++id) {
+    if (world.sensor(id)) continue;  // balls pass through sensors: not drawn as walls
     const auto shape = world.wall(id);
     if (const auto* arc = std::get_if<Arc>(&shape); arc != nullptr) arcs.push_back(*arc);
   }

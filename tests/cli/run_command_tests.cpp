@@ -115,6 +115,9 @@ TEST(RunCommand, EventsIncludeSensorsInOrderAndAPocketSensorRemovesTheBall) {
               {"position": [2, 2], "velocity": [0, 0], "radius": 0.5}],
     "sensors": [{"name": "gate", "shape": "segment", "a": [6, 0], "b": [6, 10]},
                 {"shape": "disc", "center": [17, 5], "radius": 0.3, "action": "remove_ball"}]})");
+  const ToolRun info = run_carom({"info", scene});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("sensors           2"));
   const std::string events = (dir / "events.jsonl").string();
   const ToolRun run =
       run_carom({"run", scene, "--until", "5", "--events", events, "--stats", "--json"});

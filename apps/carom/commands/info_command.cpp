@@ -47,6 +47,7 @@ int run(const InfoOptions& options) {
     json["immovable_balls"] = s.immovable;
     json["walls"] = s.walls;
     json["pockets"] = s.pockets;
+    json["sensors"] = s.sensors;
     json["packing_fraction"] =
         s.packing_fraction ? nlohmann::ordered_json(*s.packing_fraction) : nullptr;
     json["kinetic_energy"] = s.kinetic_energy;
@@ -103,6 +104,7 @@ int run(const InfoOptions& options) {
           " generated, " + std::to_string(s.immovable) + " immovable)\n";
   text += "walls             " + std::to_string(s.walls) + "\n";
   text += "pockets           " + std::to_string(s.pockets) + "\n";
+  if (s.sensors > 0) text += "sensors           " + std::to_string(s.sensors) + "\n";
   if (s.packing_fraction) text += "packing fraction  " + readable(*s.packing_fraction) + "\n";
   text += "kinetic energy    " + readable(s.kinetic_energy) + "\n";
   if (gravity) {

@@ -25,6 +25,7 @@
 #include <random>
 #include <vector>
 
+#include "box_gas.hpp"
 #include "carom/science/hard_disk_gas.hpp"
 #include "carom/world.hpp"
 
@@ -99,10 +100,7 @@ BENCHMARK(BM_WorldHardDisks)->Apply(gas_sizes)->Unit(benchmark::kMillisecond);
 
 // ---- a gas under gravity -------------------------------------------------------------------
 
-// N disks of diameter 1 and mass 1 on a square lattice in a closed square box of packing fraction
-// η, velocity components normal with standard deviation 1 (kT = 1), elastic; with gravity g down
-// of a scale height kT/(m·g) of half the side, so that the gas stays a gas, denser below. The
-// same disks without gravity are the pair's other half.
+// The box gas of box_gas.hpp, equilibrated, with gravity and without (the pair's two halves).
 struct CachedBoxGas {
   std::int64_t key = -1;
   std::unique_ptr<World> world;
@@ -113,31 +111,10 @@ World* box_gas(std::uint64_t n, std::int64_t eta_percent, bool gravity) {
   const std::int64_t key =
       static_cast<std::int64_t>(n) * 1000 + eta_percent * 10 + (gravity ? 1 : 0);
   if (cached.world && cached.key == key) return cached.world.get();
-  cached.world.reset();
-  const double eta = static_cast<double>(eta_percent) / 100.0;
-  const double side = std::sqrt(static_cast<double>(n) * std::numbers::pi / 4.0 / eta);
-  const auto per_row = static_cast<std::uint64_t>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const double spacing = side / static_cast<double>(per_row);
-  if (spacing <= 1.0) return nullptr;
-  WorldDef def{Boundary::box, {0.0, 0.0}, {side, side}, 1.0};
-  if (gravity) def.gravity = {0.0, -2.0 / side};
-  auto world = std::make_unique<World>(def);
-  std::mt19937_64 random(kGasSeed);
-  std::normal_distribution<double> speed(0.0, 1.0);
-  for (std::uint64_t i = 0; i < n; ++i) {
-    BallDef ball;
-    ball.position = {(static_cast<double>(i % per_row) + 0.5) * spacing,
-                     (static_cast<double>(i / per_row) + 0.5) * spacing};
-    ball.radius = 0.5;
-    const double vx = speed(random);
-    const double vy = speed(random);
-    ball.velocity = {vx, vy};
-    world->add_ball(ball);
-  }
-  world->set_contact_recording(false);
-  world->run_collisions(kEquilibrationPerBall * n);
+  cached.world = make_box_gas(n, static_cast<double>(eta_percent) / 100.0, gravity);
+  if (!cached.world) return nullptr;
+  cached.world->run_collisions(kEquilibrationPerBall * n);
   cached.key = key;
-  cached.world = std::move(world);
   return cached.world.get();
 }
 

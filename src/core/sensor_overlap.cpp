@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "gap_polynomial.hpp"
+#include "segment_frame.hpp"
 #include "static_query.hpp"
 
 namespace carom::detail {
@@ -242,6 +243,113 @@ TimeSpans scaled_overlap_times(const StaticQuery& query, const SensorShape& shap
   return {};
 }
 
+// The distance from p to the shape (0 inside a disc).
+double distance_to(const SensorShape& shape, Vec2 p) {
+  switch (shape.kind) {
+    case SensorShape::Kind::segment:
+      return length(nearest_on_segment(shape.segment, p) - p);
+    case SensorShape::Kind::arc:
+      return length(shape.arc.nearest(p) - p);
+    case SensorShape::Kind::disc:
+      return std::max(0.0, length(p - shape.disc.center) - shape.disc.radius);
+  }
+  return 0.0;
+}
+
+// Whether the ball's overlap cannot change within the horizon: its centre moves by at most
+// |v|·H + ½·|a|·H² and its radius grows by g·H, so a distance to the shape that clears the
+// radius by more than that (outside), or falls short of it by more (inside), stays on its side.
+// The common case of a prediction (a horizon of a cell's exit, a sensor a few cells away) is
+// decided by this without the polynomials. The slack of 2^-30 is far above the roundings.
+bool cannot_change(const Ball& ball, const Motion& motion, const SensorShape& shape, bool inside,
+                   double horizon) {
+  if (!std::isfinite(horizon)) return false;
+  const double reach =
+      (length(motion.velocity) + 0.5 * length(motion.acceleration) * horizon + motion.growth) *
+      horizon;
+  const double distance = distance_to(shape, ball.center);
+  const double slack = 0x1p-30 * (distance + ball.radius + reach + std::abs(ball.center.x) +
+                                  std::abs(ball.center.y));
+  if (!std::isfinite(reach) || !std::isfinite(slack)) return false;
+  return inside ? distance + reach + slack < ball.radius : distance - reach - slack > ball.radius;
+}
+
+// The first time the ball, clear of the shape now, touches it: the enter, by the time of impact's
+// closed forms (straight lines) or single closing (gravity, growth), the queries walls use.
+Impact first_touch(const Ball& ball, const Motion& motion, const SensorShape& shape,
+                   double horizon) {
+  switch (shape.kind) {
+    case SensorShape::Kind::segment:
+      return time_of_impact_ball_segment(ball, motion, shape.segment, horizon);
+    case SensorShape::Kind::arc:
+      return time_of_impact_ball_arc(ball, motion, shape.arc_as_given, horizon);
+    case SensorShape::Kind::disc:
+      return time_of_impact_ball_point({ball.center, ball.radius + shape.disc.radius}, motion,
+                                       shape.disc.center, horizon);
+  }
+  return {};
+}
+
+// On a straight line, the later root of |s + v·t|² = reach² for a centre inside (c < 0): the time
+// it leaves the disc, in the form that does not cancel.
+double leave_disc(Vec2 s, Vec2 v, double reach) {
+  const double a = dot(v, v);
+  const double b = dot(s, v);
+  const double c = dot(s, s) - reach * reach;
+  const double root = std::sqrt(std::max(b * b - a * c, 0.0));
+  return b < 0.0 ? (root - b) / a : -c / (b + root);
+}
+
+// [lo, hi] narrowed to the times at which constant + rate·t >= 0.
+void keep_non_negative(double constant, double rate, double& lo, double& hi) {
+  if (rate > 0.0) {
+    lo = std::max(lo, -constant / rate);
+  } else if (rate < 0.0) {
+    hi = std::min(hi, -constant / rate);
+  } else if (constant < 0.0) {
+    hi = -std::numeric_limits<double>::infinity();  // never
+  }
+}
+
+// On a straight line, when a ball now overlapping a segment or a disc stops overlapping it: the
+// neighbourhood is convex, so the line's times inside it are one interval, the union of those of
+// its convex pieces (the end discs and the slab between them), and it ends at the latest of their
+// ends. Nothing (NaN) for an arc, whose neighbourhood is not convex.
+double leave_convex(const Ball& ball, Vec2 v, const SensorShape& shape) {
+  constexpr double kEndless = std::numeric_limits<double>::infinity();
+  const double r = ball.radius;
+  if (shape.kind == SensorShape::Kind::disc) {
+    return leave_disc(ball.center - shape.disc.center, v, r + shape.disc.radius);
+  }
+  if (shape.kind != SensorShape::Kind::segment) return std::numeric_limits<double>::quiet_NaN();
+  const Segment& segment = shape.segment;
+  double latest = -kEndless;
+  // (leave_disc's form is the later root whatever the sign of c: a disc the line meets.)
+  const auto disc_end = [&](Vec2 point) {
+    const Vec2 s = ball.center - point;
+    const double b = dot(s, v);
+    if (b * b - dot(v, v) * (dot(s, s) - r * r) >= 0.0) {
+      latest = std::max(latest, leave_disc(s, v, r));
+    }
+  };
+  disc_end(segment.a);
+  disc_end(segment.b);
+  const Vec2 along = segment.b - segment.a;
+  const double length_sq = length_squared(along);
+  if (length_sq > 0.0) {
+    const Vec2 normal = left_normal(along) / std::sqrt(length_sq);
+    const Vec2 s = ball.center - segment.a;
+    double lo = -kEndless;
+    double hi = kEndless;
+    keep_non_negative(r - dot(s, normal), -dot(v, normal), lo, hi);
+    keep_non_negative(r + dot(s, normal), dot(v, normal), lo, hi);
+    keep_non_negative(dot(s, along), dot(v, along), lo, hi);
+    keep_non_negative(length_sq - dot(s, along), -dot(v, along), lo, hi);
+    if (lo <= hi) latest = std::max(latest, hi);
+  }
+  return latest;
+}
+
 }  // namespace
 
 TimeSpans overlap_times(const Ball& ball, const Motion& motion, const SensorShape& shape,
@@ -257,10 +365,31 @@ TimeSpans overlap_times(const Ball& ball, const Motion& motion, const SensorShap
 
 SensorChange next_sensor_change(const Ball& ball, const Motion& motion, const SensorShape& shape,
                                 bool inside, double horizon, double now) {
+  if (cannot_change(ball, motion, shape, inside, horizon)) return {};
+  if (!inside && distance_to(shape, ball.center) > ball.radius) {
+    // Clear of it now: the enter is the first touch, where the clock tells it from now (else the
+    // spans below decide, as they decide every change at an instant).
+    const Impact touch = first_touch(ball, motion, shape, horizon);
+    if (!touch.hit) return {};
+    if (now + touch.t != now) return {true, touch.t};
+  }
+  if (inside && motion.acceleration == Vec2{} && motion.growth == 0.0 &&
+      motion.velocity != Vec2{} && distance_to(shape, ball.center) < ball.radius) {
+    // Inside it now, on a straight line: the leaving time in closed form, where the clock tells
+    // it from now (else the spans below decide).
+    const double leave = leave_convex(ball, motion.velocity, shape);
+    if (leave > 0.0 && now + leave != now) {
+      if (!(leave < horizon)) return {};
+      return {true, leave};
+    }
+  }
   const StaticQuery query = make_query(ball, motion, shape, horizon);
   const double scaled_horizon = query.scaled_horizon();
   const TimeSpans spans = scaled_overlap_times(query, shape, scaled_horizon);
   const auto at_now = [&](double scaled_t) { return now + query.real_time(scaled_t) == now; };
+  // A horizon the clock cannot tell from now (the ball has another event at this instant) holds
+  // no span to tell inside from outside: it is decided when the ball is predicted again.
+  if (at_now(scaled_horizon)) return {};
   // The first span that is more than an instant at now.
   std::size_t first = 0;
   if (spans.size() > 0 && at_now(spans.end(0))) first = 1;

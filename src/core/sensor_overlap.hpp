@@ -44,6 +44,7 @@ struct SensorShape {
   enum class Kind : unsigned char { segment, arc, disc };
   Kind kind = Kind::segment;
   Segment segment;
+  Arc arc_as_given;  // the arc (with `arc`, its prepared frame)
   ArcFrame arc;
   Ball disc;
 };
@@ -60,7 +61,8 @@ struct SensorShape {
 // from 0 (now + t == now) counts as starting or ending at 0, so that an enter is never followed
 // by an exit at the same instant (the ball, brought to the enter's time, may sit a rounding
 // outside the shape) nor an exit by an enter. Computed again from the same ball state and the
-// same recorded state, it gives the same answer, so changes at one instant cannot repeat.
+// same recorded state, it gives the same answer, so changes at one instant cannot repeat. Within
+// a horizon the clock cannot tell from 0 nothing is decided (no change).
 struct SensorChange {
   bool found = false;
   double t = 0.0;

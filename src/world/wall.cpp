@@ -41,6 +41,7 @@ SensorShape sensor_shape(const Wall& wall) {
     shape.disc = wall.disc;
   } else if (wall.is_arc) {
     shape.kind = SensorShape::Kind::arc;
+    shape.arc_as_given = wall.arc;
     shape.arc = wall.frame;
   } else {
     shape.kind = SensorShape::Kind::segment;

@@ -29,6 +29,7 @@ SensorShape segment_shape(const Segment& s) {
 SensorShape arc_shape(const Arc& arc) {
   SensorShape shape;
   shape.kind = SensorShape::Kind::arc;
+  shape.arc_as_given = arc;
   shape.arc = make_arc_frame("test", arc);
   return shape;
 }
@@ -71,6 +72,10 @@ TEST(SensorOverlap, ABulletThroughAThinLineEntersAndLeavesAtTheClosedFormTimes) 
   EXPECT_EQ(at_once.t, 0.0);
   // Past the horizon: nothing.
   EXPECT_FALSE(next_sensor_change(bullet, Motion{velocity, {}}, line, false, 0.2).found);
+  // A horizon the clock cannot tell from now decides nothing, either way (rather than "no span
+  // holds now", which would read as leaving at once).
+  EXPECT_FALSE(next_sensor_change(bullet, Motion{velocity, {}}, line, true, 0.0).found);
+  EXPECT_FALSE(next_sensor_change(bullet, Motion{velocity, {}}, line, true, 1e-20, 1.0).found);
 }
 
 TEST(SensorOverlap, AFallingBallThroughARingIsInsideTwiceOnTheWayUpAndDown) {

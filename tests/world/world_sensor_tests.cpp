@@ -19,7 +19,7 @@
 namespace carom::sensor_tests {
 namespace {
 
-BallDef ball(Vec2 position, Vec2 velocity, double radius = 0.5) {
+BallDef ball_def(Vec2 position, Vec2 velocity, double radius = 0.5) {
   BallDef def;
   def.position = position;
   def.velocity = velocity;
@@ -35,7 +35,7 @@ TEST(WorldSensors, ABulletAtAMillionDiametersAStepRecordsItsEnterAndExit) {
   World world;
   const WallId line = world.add_sensor(Segment{{0.0, -1.0}, {0.0, 1.0}});
   // Radius 0.01: 10^6 diameters a step of 1 is a speed of 2·10^4.
-  const BallId bullet = world.add_ball(ball({-10000.0, 0.5}, {2e4, 0.0}, 0.01));
+  const BallId bullet = world.add_ball(ball_def({-10000.0, 0.5}, {2e4, 0.0}, 0.01));
   world.step(1.0);
   const auto events = events_of(world);
   ASSERT_EQ(events.size(), 2U);
@@ -58,7 +58,7 @@ TEST(WorldSensors, AFallingBallEntersALineAtTheParabolasTime) {
   def.gravity = {0.0, -9.81};
   World world(def);
   const WallId line = world.add_sensor(Segment{{-5.0, 0.0}, {5.0, 0.0}});
-  const BallId dropped = world.add_ball(ball({0.0, 10.0}, {0.0, 0.0}, 0.5));
+  const BallId dropped = world.add_ball(ball_def({0.0, 10.0}, {0.0, 0.0}, 0.5));
   world.step(1.42);
   ASSERT_EQ(world.sensor_events().size(), 1U);
   // y(t) = 10 − 4.905·t² reaches 0.5 (the ball touches the line).
@@ -75,7 +75,7 @@ TEST(WorldSensors, AGrowingBallEntersADiscWhenItsRadiusReachesIt) {
   def.growth_rate = 0.5;  // r = 1·(1 + 0.5·t)
   World world(def);
   const WallId zone = world.add_sensor(Ball{{0.0, 0.0}, 1.0});
-  world.add_ball(ball({3.0, 0.0}, {0.0, 0.0}, 1.0));
+  world.add_ball(ball_def({3.0, 0.0}, {0.0, 0.0}, 1.0));
   world.step(4.0);
   ASSERT_EQ(world.sensor_events().size(), 1U);
   // Radius 2 = 3 − 1, to the sensors' margin (2^-40 of the coordinates, over the growth).
@@ -86,8 +86,8 @@ TEST(WorldSensors, AGrowingBallEntersADiscWhenItsRadiusReachesIt) {
 TEST(WorldSensors, APocketRemovesTheBallThatEntersIt) {
   World world(WorldDef{Boundary::box, {0.0, 0.0}, {10.0, 10.0}});
   const WallId pocket = world.add_sensor(Ball{{9.0, 5.0}, 0.2}, SensorAction::remove_ball);
-  const BallId rolled = world.add_ball(ball({2.0, 5.0}, {4.0, 0.0}));
-  const BallId stays = world.add_ball(ball({2.0, 2.0}, {0.0, 0.0}));
+  const BallId rolled = world.add_ball(ball_def({2.0, 5.0}, {4.0, 0.0}));
+  const BallId stays = world.add_ball(ball_def({2.0, 2.0}, {0.0, 0.0}));
   EXPECT_EQ(world.sensor(pocket), SensorAction::remove_ball);
   EXPECT_EQ(world.sensor(0), std::nullopt);
   world.step(3.0);
@@ -108,8 +108,8 @@ TEST(WorldSensors, AFilteredBallPassesASensorWithoutEvents) {
   World world;
   const WallId line = world.add_sensor(Segment{{0.0, -1.0}, {0.0, 1.0}});
   world.set_wall_filter(line, {2, 2, 0});
-  world.add_ball(ball({-5.0, 0.0}, {10.0, 0.0}), CollisionFilter{1, 1, 0});
-  world.add_ball(ball({-5.0, 0.2}, {10.0, 0.0}), CollisionFilter{2, 2, 0});
+  world.add_ball(ball_def({-5.0, 0.0}, {10.0, 0.0}), CollisionFilter{1, 1, 0});
+  world.add_ball(ball_def({-5.0, 0.2}, {10.0, 0.0}), CollisionFilter{2, 2, 0});
   world.step(1.0);
   ASSERT_EQ(world.sensor_events().size(), 2U);  // the second ball's enter and exit only
   EXPECT_EQ(world.sensor_events()[0].ball.index, 1U);
@@ -118,7 +118,7 @@ TEST(WorldSensors, AFilteredBallPassesASensorWithoutEvents) {
 TEST(WorldSensors, PlacingABallIntoOrOutOfASensorEntersOrLeavesAtTheNextRun) {
   World world;
   const WallId zone = world.add_sensor(Ball{{0.0, 0.0}, 2.0});
-  const BallId moved = world.add_ball(ball({10.0, 0.0}, {0.0, 0.0}));
+  const BallId moved = world.add_ball(ball_def({10.0, 0.0}, {0.0, 0.0}));
   world.step(1.0);
   EXPECT_TRUE(world.sensor_events().empty());
   world.set_position(moved, {1.0, 0.0});
@@ -139,12 +139,27 @@ TEST(WorldSensors, PlacingABallIntoOrOutOfASensorEntersOrLeavesAtTheNextRun) {
   EXPECT_EQ(world.sensor_events()[0].time, 3.0);
 }
 
+TEST(WorldSensors, ABallAtACrossingOfTwoSensorsEntersBothAtOnce) {
+  // Each enter at the run's start leaves the other's decision to a horizon of zero, which
+  // decides nothing (rather than reading "outside" and leaving at once, for ever).
+  World world;
+  const BallId ball = world.add_ball(ball_def({0.1, 0.1}, {1.0, 0.5}));
+  const WallId across = world.add_sensor(Segment{{-5.0, 0.0}, {5.0, 0.0}});
+  const WallId down = world.add_sensor(Segment{{0.0, -5.0}, {0.0, 5.0}});
+  world.step(0.1);
+  ASSERT_EQ(world.sensor_events().size(), 2U);
+  EXPECT_EQ(world.sensor_events()[0].time, 0.0);
+  EXPECT_EQ(world.sensor_events()[1].time, 0.0);
+  EXPECT_EQ(world.balls_in_sensor(across), std::vector<BallId>{ball});
+  EXPECT_EQ(world.balls_in_sensor(down), std::vector<BallId>{ball});
+}
+
 TEST(WorldSensors, QueriesPlacementAndAuditIgnoreSensors) {
   World world;
   world.add_sensor(Segment{{0.0, -5.0}, {0.0, 5.0}});
   world.add_sensor(Ball{{10.0, 0.0}, 3.0});
   // A ball may be placed over a sensor.
-  const BallId over = world.add_ball(ball({10.0, 0.0}, {0.0, 0.0}));
+  const BallId over = world.add_ball(ball_def({10.0, 0.0}, {0.0, 0.0}));
   EXPECT_FALSE(world.audit());
   // A ray through both meets only the ball.
   const QueryHit hit = world.cast_ray({-5.0, 0.0}, {20.0, 0.0});
@@ -197,8 +212,8 @@ Gas make_gas(std::uint64_t seed) {
   for (int row = 0; row < 6; ++row) {
     for (int column = 0; column < 6; ++column) {
       gas.balls.push_back(
-          gas.world.add_ball(ball({2.5 + column * 5.0, 2.5 + row * 5.0},
-                                  {speed(engine), speed(engine)}, 0.3 + 0.1 * (column % 3))));
+          gas.world.add_ball(ball_def({2.5 + column * 5.0, 2.5 + row * 5.0},
+                                      {speed(engine), speed(engine)}, 0.3 + 0.1 * (column % 3))));
     }
   }
   return gas;
@@ -341,7 +356,8 @@ TEST(WorldSensors, SensorsChangeTheMotionOnlyByRounding) {
   Gas with = make_gas(5);
   World without(WorldDef{Boundary::box, {0.0, 0.0}, {30.0, 30.0}});
   for (const BallId id : with.balls) {
-    without.add_ball(ball(with.world.position(id), with.world.velocity(id), with.world.radius(id)));
+    without.add_ball(
+        ball_def(with.world.position(id), with.world.velocity(id), with.world.radius(id)));
   }
   with.world.step(2.0);
   without.step(2.0);

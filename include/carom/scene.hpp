@@ -211,11 +211,11 @@ struct SceneWorld {
   double start_time = 0.0;                          // scene time when the world's clock read 0
   double thermostat_work = 0.0;  // Σ of the thermostat's changes of kinetic energy so far
   // sensors[k] is scene.sensors[k]: the world's last scene.sensors.size() walls.
-  std::vector<WallId> sensors;
+  std::vector<WallId> sensors{};
   // The sensors' enters and exits during the last step_scene / run_scene_until /
   // run_scene_collisions, in order (world times; contacts_before is the event's place in the
   // call's `contacts` vector: the index of the contact after it).
-  std::vector<SensorEvent> sensor_events;
+  std::vector<SensorEvent> sensor_events{};
 
   // The scene's clock now: start_time + world.time().
   [[nodiscard]] double time() const noexcept { return start_time + world.time(); }

@@ -43,6 +43,13 @@ void DrawnWorld::add_segment(const Segment& segment) {
   static_cast<void>(scene_world_.world.add_segment(segment));
 }
 
+int DrawnWorld::add_sensor(const Segment& segment, bool removes) {
+  const WallId wall = scene_world_.world.add_sensor(
+      segment, removes ? SensorAction::remove_ball : SensorAction::report);
+  has_sensors_ = true;
+  return static_cast<int>(wall);
+}
+
 void DrawnWorld::add_arc(const Arc& arc) { static_cast<void>(scene_world_.world.add_arc(arc)); }
 
 void DrawnWorld::remove_ball(int index) {
@@ -86,7 +93,7 @@ double DrawnWorld::step(double dt) {
   // of its own); for any other it is one World::step, whose contacts the World keeps.
   step_in_pieces_ = !scene_world_.pockets.empty() || scene_world_.scene.thermostat.has_value();
   step_contacts_.clear();
-  if (step_in_pieces_) {
+  if (step_in_pieces_ || has_sensors_ || !scene_world_.sensors.empty()) {
     step_balls_ = scene_world_.balls;
   } else {
     step_balls_.clear();

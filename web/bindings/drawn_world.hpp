@@ -35,6 +35,9 @@ class DrawnWorld {
   // Returns the ball's index (0, 1, ... in the order added).
   int add_ball(Vec2 position, Vec2 velocity, double radius, double mass);
   void add_segment(const Segment& segment);
+  // A segment sensor (World::add_sensor): balls pass it, each enter and exit recorded
+  // (step_sensor_events); `removes`: the ball that enters is removed (a drain). Its wall id.
+  int add_sensor(const Segment& segment, bool removes);
   void add_arc(const Arc& arc);
   // Takes the ball out of the world (a pinball's drain); its index stays taken, so the indices of
   // the others do not change.
@@ -88,12 +91,17 @@ class DrawnWorld {
   // pockets (or a thermostat) is stepped in pieces, and World::contacts() holds only the last
   // piece's, so step keeps them all for such a world (and for any other reads the World's own).
   [[nodiscard]] std::span<const ContactEvent> step_contacts() const noexcept;
+  // The sensors' enters and exits during the last step, in order.
+  [[nodiscard]] std::span<const SensorEvent> step_sensor_events() const noexcept {
+    return scene_world_.sensor_events;
+  }
 
   // ---- naming balls (for the queries and contacts, world_queries.hpp) ----
   // The World's handle of the ball at index; throws InvalidArgument as every call by index does.
   [[nodiscard]] BallId handle(int index) const { return id(index); }
-  // The index of a ball of the world, or of one a pocket took during the last step (so that
-  // step_contacts can name it); -1 for a pocket or a ball this DrawnWorld does not list.
+  // The index of a ball of the world, or of one a pocket or a sensor took during the last step
+  // (so that step_contacts and step_sensor_events can name it); -1 for a pocket or a ball this
+  // DrawnWorld does not list.
   [[nodiscard]] int index_of(BallId ball) const;
   // The index of a pocket (in pockets()), or -1 for any other ball.
   [[nodiscard]] int pocket_of(BallId ball) const;
@@ -111,7 +119,10 @@ class DrawnWorld {
   std::vector<std::optional<Vec2>> held_velocity_;  // set while a ball is held
   std::vector<float> snapshot_;
   std::vector<ContactEvent> step_contacts_;  // the last step's, when it went in pieces
-  std::vector<BallId> step_balls_;           // then also the balls by index as it began
+  // The balls by index as the last step began, when it went in pieces or the world has sensors
+  // (a pocket or a sensor may take a ball that step_contacts or step_sensor_events name).
+  std::vector<BallId> step_balls_;
+  bool has_sensors_ = false;
   bool step_in_pieces_ = false;
 };
 

@@ -41,6 +41,23 @@ int add_ball(DrawnWorld& w, Vec2 position, Vec2 velocity, double radius, double 
 void add_segment(DrawnWorld& w, const Segment& s) {
   guarded_call([&] { w.add_segment(s); });
 }
+int add_sensor(DrawnWorld& w, const Segment& s, bool removes) {
+  return guarded_call([&] { return w.add_sensor(s, removes); });
+}
+// The last step's sensor events as {time, enter, ball (index), sensor (wall id), removed}.
+emscripten::val sensor_events(const DrawnWorld& w) {
+  emscripten::val out = emscripten::val::array();
+  for (const SensorEvent& e : w.step_sensor_events()) {
+    emscripten::val event = emscripten::val::object();
+    event.set("time", e.time);
+    event.set("enter", e.kind == SensorEventKind::enter);
+    event.set("ball", w.index_of(e.ball));
+    event.set("sensor", e.sensor);
+    event.set("removed", e.removed);
+    out.call<void>("push", event);
+  }
+  return out;
+}
 void add_arc(DrawnWorld& w, const Arc& a) {
   guarded_call([&] { w.add_arc(a); });
 }
@@ -237,6 +254,8 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .constructor(&make_world, emscripten::allow_raw_pointers())
       .function("add_ball", &add_ball)
       .function("add_segment", &add_segment)
+      .function("add_sensor_segment", &add_sensor)
+      .function("sensor_events", &sensor_events)
       .function("add_arc", &add_arc)
       .function("remove_ball", &remove_ball)
       .function("fill_lattice", &fill)

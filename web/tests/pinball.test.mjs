@@ -1,6 +1,7 @@
-// "Pinball": a launched ball goes up the lane, round the table and down the drain, never leaving
-// the table; the total energy (kinetic + potential, as the page shows them) never rises between
-// a launch and the next launch or drain; the space bar launches and Reset clears the table.
+// "Pinball": a launched ball goes up the lane, round the table and down the drain (a sensor that
+// removes it), never leaving the table; the total energy (kinetic + potential, as the page shows
+// them) never rises between a launch and the next launch or drain; the rollovers' score counts
+// their sensors' enters; the space bar launches and Reset clears the table.
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
@@ -20,6 +21,7 @@ function table(page) {
       balls: p.inPlay.map((i) => p.world.position(i)),
       launched: p.launched,
       drained: p.drained,
+      score: p.score,
       audit: p.world.audit(),
       upper: p.table.upper,
     };
@@ -50,6 +52,11 @@ test('a launched ball goes round the table, stays on it, loses energy only in bo
   }
   assert.ok(highest > 25, `the ball went up the lane and round the top: highest ${highest}`);
   assert.equal(seen.balls.length, 0);
+  assert.equal(seen.score % 100, 0, `score ${seen.score}`);
+  // The drain took the ball at the line: no ball centre ever went below it by more than its
+  // radius (the drain sensor removes it as its edge reaches the line).
+  const gone = await page.evaluate(() => window.caromPinball.world.ball_count());
+  assert.equal(gone, 6, 'only the bumpers and posts are left');
   // Between the launch and the drain the total can only fall: every bounce has restitution 0.8,
   // and carom keeps kinetic + potential energy along every flight and slide.
   const log = await page.evaluate(() => window.caromPinball.energyLog);
@@ -86,6 +93,28 @@ test('the space bar launches, the readout adds up, and Reset clears the table', 
   await page.waitForTimeout(200);
   assert.equal(await readout(page, 'in_play'), '0');
   assert.equal(await readout(page, 'launched'), '0');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a ball dropped through a rollover scores once, however fast',
+     {timeout: 60000}, async () => {
+  const {page, problems} = await openPage(session, 'pinball.html');
+  await page.click('#reset');
+  // Straight down through the left rollover's middle at 200 diameters a second: it crosses the
+  // sensor line (one diameter thick, with the ball) in a fraction of a frame.
+  const start = await page.evaluate(() => {
+    const p = window.caromPinball;
+    const lane = p.table.rollovers[0];
+    const x = (lane.a.x + lane.b.x) / 2;
+    p.world.add_ball({x, y: 33}, {x: 0, y: -200}, 0.3, 1);
+    return p.score;
+  });
+  assert.equal(start, 0);
+  await page.waitForFunction(() => window.caromPinball.score > 0, null, {timeout: 20000});
+  await page.waitForTimeout(300);
+  assert.equal(await page.evaluate(() => window.caromPinball.score), 100);
+  assert.equal(await readout(page, 'score'), '100');
   assert.deepEqual(problems, []);
   await page.close();
 });

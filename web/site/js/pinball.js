@@ -2,7 +2,9 @@
 // that do not move. The launch button (or the space bar) sends a ball up the plunger's lane;
 // it comes down through the bumpers and leaves by the drain between the flippers. The motion,
 // the bounces and the energies are carom's (carom::web::DrawnWorld over a carom::World with
-// gravity); this page launches, takes drained balls out and draws.
+// gravity), and so are the drain (a sensor that removes the ball reaching it, at that instant)
+// and the rollovers (sensors that report the balls passing, for the score); this page launches,
+// counts and draws.
 import {attempt, carom} from './carom.js';
 import {packColour} from './disc_raster.js';
 import {num} from './format.js';
@@ -34,6 +36,9 @@ let fixedCount = 0;  // bumpers and posts: balls 0 .. fixedCount − 1
 let inPlay = [];     // indices of the balls on the table
 let launched = 0;
 let drained = 0;
+let score = 0;
+let rolloverIds = [];  // the rollover sensors' wall ids
+const ROLLOVER_POINTS = 100;
 let frames = 0;
 // Per frame: the time, the total energy and the launches and drains so far. Between one launch
 // or drain and the next the total can only fall (restitution < 1); the tests check it.
@@ -46,6 +51,8 @@ function build() {
     restitution: RESTITUTION, collapse_time: 0, cell_size: 0,
     gravity: {x: 0, y: -GRAVITY}, rest_height: REST_HEIGHT});
   for (const s of [...table.walls, ...table.flippers]) world.add_segment(s);
+  attempt(() => world.add_sensor_segment(table.drainLine, true));
+  rolloverIds = table.rollovers.map((s) => attempt(() => world.add_sensor_segment(s, false)));
   // Immovable (mass ∞): gravity does not move them, and a ball cannot push them.
   for (const b of [...table.bumpers, ...table.posts]) {
     world.add_ball(b, {x: 0, y: 0}, b.radius, Infinity);
@@ -54,6 +61,7 @@ function build() {
   inPlay = [];
   launched = 0;
   drained = 0;
+  score = 0;
   energyLog.length = 0;
 }
 
@@ -85,13 +93,17 @@ function launch() {
   message.textContent = '';
 }
 
-// Balls whose centre has passed the drain line (left of the lane) leave the table. Read first,
-// removed after: the snapshot's view of the module's memory is valid only until the next call.
-function drain(balls) {
-  const gone = inPlay.filter((i) => balls[4 * i] < LANE_X && balls[4 * i + 1] < DRAIN_Y);
-  for (const i of gone) world.remove_ball(i);
-  inPlay = inPlay.filter((i) => !gone.includes(i));
-  drained += gone.length;
+// The last step's sensor events: a ball the drain removed leaves play; a ball entering a
+// rollover scores.
+function count(events) {
+  for (const e of events) {
+    if (e.removed) {
+      inPlay = inPlay.filter((i) => i !== e.ball);
+      ++drained;
+    } else if (e.enter && rolloverIds.includes(e.sensor)) {
+      score += ROLLOVER_POINTS;
+    }
+  }
 }
 
 // ---- drawing -----------------------------------------------------------------------------
@@ -114,6 +126,7 @@ function draw() {
   painter.polygon(table.drain, '#212121');
   painter.label('drain', {x: LANE_X / 2, y: DRAIN_Y / 2}, '#fafafa');
   painter.segments(table.walls, '#333', 2);
+  painter.segments(table.rollovers, '#2ca02c', 3);
   painter.segments(table.flippers, '#d62728', 6);
   painter.frame();
   return balls;
@@ -128,6 +141,7 @@ function report() {
     in_play: String(inPlay.length),
     launched: String(launched),
     drained: String(drained),
+    score: String(score),
     time: world.time().toFixed(2),
     collisions: String(world.collision_count()),
     kinetic: num(kinetic, 6),
@@ -140,7 +154,7 @@ function report() {
 
 function frame() {
   attempt(() => world.step(FRAME_TIME));
-  drain(world.snapshot());
+  count(world.sensor_events());
   draw();
   energyLog.push({time: world.time(), total: world.kinetic_energy() + world.potential_energy(),
                   launched, drained});
@@ -171,6 +185,7 @@ window.caromPinball = {
   get inPlay() { return [...inPlay]; },
   get launched() { return launched; },
   get drained() { return drained; },
+  get score() { return score; },
   get energyLog() { return [...energyLog]; },
 };
 

@@ -6,13 +6,14 @@
 // rounded corners (quarter circles, as short segments) turn a launched ball left across the
 // table. Below: three round bumpers and three posts (immovable balls), two triangular slingshots,
 // two slanted walls that lead down to the flippers (static segments), and between the flippers'
-// tips the gap to the drain.
+// tips the gap to the drain. Two rollover lanes between the top posts are sensors: a ball
+// passing one scores.
 
 export const WIDTH = 20;
 export const HEIGHT = 36;
 export const LANE_X = 18.5;  // the plunger lane's inner wall; the lane is the strip right of it
 export const BALL_RADIUS = 0.5;
-// A ball whose centre falls below this line left of the lane has gone down the drain.
+// The drain: a sensor along this line, left of the lane, removes the ball that reaches it.
 export const DRAIN_Y = 2;
 const CORNER_RADIUS = 5;
 const CORNER_SEGMENTS = 8;  // short enough that the bend reads as a curve
@@ -52,6 +53,9 @@ export function pinballTable() {
   const bumpers = [{x: middle - 3.5, y: 25}, {x: middle + 3.5, y: 25}, {x: middle, y: 20.5}]
       .map((p) => ({...p, radius: 1.4}));
   const posts = [-2, 0, 2].map((dx) => ({x: middle + dx, y: 31, radius: 0.35}));
+  // Across the gaps between the posts, a post's radius clear of each.
+  const rollovers = [-1, 1].map((side) => ({
+    a: {x: middle + side * 0.35, y: 31}, b: {x: middle + side * 1.65, y: 31}}));
   return {
     lower: {x: 0, y: 0},
     upper: {x: WIDTH, y: HEIGHT},
@@ -59,6 +63,8 @@ export function pinballTable() {
     flippers: [flipper, {a: mirror(flipper.a), b: mirror(flipper.b)}],
     bumpers,
     posts,
+    rollovers,
+    drainLine: {a: {x: 0, y: DRAIN_Y}, b: {x: LANE_X, y: DRAIN_Y}},
     // Drawn under the flippers' gap; a ball there is taken out (DRAIN_Y).
     drain: [{x: middle - 2.2, y: 0}, {x: middle + 2.2, y: 0}, {x: middle + 2.2, y: DRAIN_Y},
             {x: middle - 2.2, y: DRAIN_Y}],

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -35,6 +36,7 @@ struct Frames {
   std::vector<double> radii;       // F × N
   std::vector<ContactEvent> contacts;
   std::vector<PottedBall> potted;
+  std::vector<SensorEvent> sensor_events;
 
   void record(const SceneWorld& built) {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -68,6 +70,7 @@ py::dict run_scene(const Scene& scene, double until, double frame_interval) {
   if (!std::isfinite(until)) throw py::value_error("until must be a finite scene time");
   SceneWorld built = make_world(scene);
   const py::array_t<std::uint64_t> ids = scene_ids(built);
+  const std::vector<BallId> balls_at_start = built.balls;
   // Frame k is at scene time start + k·interval (by multiplication, so no drift adds up).
   const double start = built.time();
   const double steps = std::floor((until - start) / frame_interval + 1e-9);
@@ -86,6 +89,8 @@ py::dict run_scene(const Scene& scene, double until, double frame_interval) {
       const double world_time =
           static_cast<double>(k) * frame_interval + (start - built.start_time);
       run_scene_until(built, world_time, &frames.contacts, &frames.potted);
+      frames.sensor_events.insert(frames.sensor_events.end(), built.sensor_events.begin(),
+                                  built.sensor_events.end());
       if (built.world.stop_reason() == StopReason::interrupted) break;
       frames.record(built);
     }
@@ -113,6 +118,21 @@ py::dict run_scene(const Scene& scene, double until, double frame_interval) {
     potted.append(d);
   }
   out["potted"] = potted;
+  // The sensors' enters and exits: the ball by scene index, the sensor by its place in the
+  // scene's sensors (the world's last walls).
+  py::list sensor_events;
+  const std::size_t first_sensor = built.world.wall_count() - built.sensors.size();
+  for (const SensorEvent& e : frames.sensor_events) {
+    py::dict d;
+    d["time"] = e.time + built.start_time;
+    d["kind"] = e.kind == SensorEventKind::enter ? "enter" : "exit";
+    const auto at = std::find(balls_at_start.begin(), balls_at_start.end(), e.ball);
+    d["ball"] = static_cast<std::size_t>(at - balls_at_start.begin());
+    d["sensor"] = static_cast<std::size_t>(e.sensor) - first_sensor;
+    d["removed"] = e.removed;
+    sensor_events.append(d);
+  }
+  out["sensor_events"] = sensor_events;
   out["start_time"] = built.start_time;
   out["box"] = py::make_tuple(built.world.def().lower, built.world.def().upper);
   out["boundary"] = built.world.def().boundary == Boundary::periodic ? "periodic"
@@ -167,8 +187,9 @@ void bind_scene(py::module_& m) {
   m.def("run_scene", &run_scene, py::arg("scene"), py::arg("until"), py::arg("frame_interval"),
         "Runs the scene, with its pockets and thermostat, to scene time `until`, a frame every "
         "frame_interval: a dict of times (F,), positions and velocities (F, N, 2), radii (F, N) "
-        "(NaN once a pocket takes a ball), ids (N,), contacts, potted, start_time, box and "
-        "boundary");
+        "(NaN once a pocket or a sensor takes a ball), ids (N,), contacts, potted, "
+        "sensor_events (dicts of time, kind \"enter\" or \"exit\", ball, sensor, removed), "
+        "start_time, box and boundary");
 }
 
 }  // namespace carom::python

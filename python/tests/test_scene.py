@@ -121,6 +121,21 @@ def test_pockets_take_balls_and_leave_nan_rows():
     assert live.sum() == 16 - len(run["potted"])
 
 
+def test_sensors_in_a_scene_report_and_a_pocket_sensor_removes():
+    scene = carom.parse_scene("""{
+      "world": {"boundary": "box", "lower": [0, 0], "upper": [20, 10]},
+      "balls": [{"position": [2, 5], "velocity": [4, 0], "radius": 0.5}],
+      "sensors": [{"shape": "segment", "a": [6, 0], "b": [6, 10]},
+                  {"shape": "disc", "center": [17, 5], "radius": 0.3, "action": "remove_ball"}]}""")
+    run = carom.run_scene(scene, until=5.0, frame_interval=1.0)
+    kinds = [(e["kind"], e["sensor"], e["removed"]) for e in run["sensor_events"]]
+    assert kinds == [("enter", 0, False), ("exit", 0, False), ("enter", 1, True)]
+    assert run["sensor_events"][0]["ball"] == 0
+    # The gate's line is reached when the ball's edge is at x = 6: t = (5.5 - 2) / 4.
+    assert abs(run["sensor_events"][0]["time"] - 3.5 / 4.0) < 1e-10
+    assert np.isnan(run["radii"][-1, 0])
+
+
 def test_a_thermostat_holds_the_temperature():
     scene = carom.load_scene(EXAMPLES / "compression.json")
     run = carom.run_scene(scene, until=2.0, frame_interval=0.5)

@@ -261,13 +261,12 @@ double distance_to(const SensorShape& shape, Vec2 p) {
 // radius by more than that (outside), or falls short of it by more (inside), stays on its side.
 // The common case of a prediction (a horizon of a cell's exit, a sensor a few cells away) is
 // decided by this without the polynomials. The slack of 2^-30 is far above the roundings.
-bool cannot_change(const Ball& ball, const Motion& motion, const SensorShape& shape, bool inside,
+bool cannot_change(const Ball& ball, const Motion& motion, double distance, bool inside,
                    double horizon) {
   if (!std::isfinite(horizon)) return false;
   const double reach =
       (length(motion.velocity) + 0.5 * length(motion.acceleration) * horizon + motion.growth) *
       horizon;
-  const double distance = distance_to(shape, ball.center);
   const double slack = 0x1p-30 * (distance + ball.radius + reach + std::abs(ball.center.x) +
                                   std::abs(ball.center.y));
   if (!std::isfinite(reach) || !std::isfinite(slack)) return false;
@@ -365,8 +364,10 @@ TimeSpans overlap_times(const Ball& ball, const Motion& motion, const SensorShap
 
 SensorChange next_sensor_change(const Ball& ball, const Motion& motion, const SensorShape& shape,
                                 bool inside, double horizon, double now) {
-  if (cannot_change(ball, motion, shape, inside, horizon)) return {};
-  if (!inside && distance_to(shape, ball.center) > ball.radius) {
+  // The distance from the centre to the shape, which the quick answers below share.
+  const double distance = distance_to(shape, ball.center);
+  if (cannot_change(ball, motion, distance, inside, horizon)) return {};
+  if (!inside && distance > ball.radius) {
     // Clear of it now: the enter is the first touch, where the clock tells it from now (else the
     // spans below decide, as they decide every change at an instant).
     const Impact touch = first_touch(ball, motion, shape, horizon);
@@ -374,7 +375,7 @@ SensorChange next_sensor_change(const Ball& ball, const Motion& motion, const Se
     if (now + touch.t != now) return {true, touch.t};
   }
   if (inside && motion.acceleration == Vec2{} && motion.growth == 0.0 &&
-      motion.velocity != Vec2{} && distance_to(shape, ball.center) < ball.radius) {
+      motion.velocity != Vec2{} && distance < ball.radius) {
     // Inside it now, on a straight line: the leaving time in closed form, where the clock tells
     // it from now (else the spans below decide).
     const double leave = leave_convex(ball, motion.velocity, shape);

@@ -171,6 +171,10 @@ struct Scene {
   // every one has the default, else one for each.
   std::vector<CollisionFilter> segment_filters;
   std::vector<CollisionFilter> arc_filters;
+  // The segments' and arcs' motions, by index ("motion" in JSON; carom/wall_motion.hpp): empty
+  // when none moves, else one for each (nothing for one that stands still).
+  std::vector<std::optional<WallMotion>> segment_motions;
+  std::vector<std::optional<WallMotion>> arc_motions;
   std::vector<ScenePocket> pockets;
   std::vector<SceneSensor> sensors;
   std::vector<SceneGenerator> generators;
@@ -259,6 +263,11 @@ std::uint64_t run_scene_collisions(SceneWorld& scene_world, std::uint64_t count,
                                    std::vector<PottedBall>* potted = nullptr,
                                    double time_limit = std::numeric_limits<double>::infinity());
 
+// The world's wall id of the scene's segment i and arc i (make_world adds walls in the scene's
+// order, after a box's four sides).
+[[nodiscard]] WallId segment_wall(const SceneWorld& scene_world, std::size_t i);
+[[nodiscard]] WallId arc_wall(const SceneWorld& scene_world, std::size_t i);
+
 // The world's state now as a scene to continue from: the same settings (gravity as it is now,
 // after any World::set_gravity), walls and pockets, the balls still in the world (positions and
 // velocities now, names, colours, restitution kept), no generators, and time = scene_world.time().
@@ -272,6 +281,7 @@ struct SceneSummary {
   std::size_t walls = 0;  // segments, polyline segments and arcs
   std::size_t pockets = 0;
   std::size_t sensors = 0;
+  std::size_t moving_walls = 0;  // segments and arcs given a motion
   double kinetic_energy = 0.0;
   // −Σ m·gravity·p over movable balls, as World::potential_energy (0 without gravity).
   double potential_energy = 0.0;

@@ -31,6 +31,7 @@
 #include "carom/sensor.hpp"
 #include "carom/shapes.hpp"
 #include "carom/vec2.hpp"
+#include "carom/wall_motion.hpp"
 #include "carom/world_query.hpp"
 
 namespace carom {
@@ -173,9 +174,9 @@ class World {
   WallId add_sensor(const Arc& arc, SensorAction action = SensorAction::report);
   WallId add_sensor(const Ball& disc, SensorAction action = SensorAction::report);
   [[nodiscard]] std::size_t wall_count() const noexcept;
-  // A wall's shape as it was added: a Segment (a box boundary's four walls, ids 0–3, and every
-  // segment), an Arc, or a sensor's disc (a Ball). Throws InvalidArgument for an id at or past
-  // wall_count().
+  // A wall's shape: a Segment (a box boundary's four walls, ids 0–3, and every segment), an Arc,
+  // or a sensor's disc (a Ball); a moving wall's where it is at the world's time. Throws
+  // InvalidArgument for an id at or past wall_count().
   [[nodiscard]] std::variant<Segment, Arc, Ball> wall(WallId id) const;
   // What the sensor `id` does; nothing for a wall that is no sensor. Throws InvalidArgument for
   // an id at or past wall_count().
@@ -183,6 +184,25 @@ class World {
   // The balls inside sensor `id` (overlapping it as of the last enter and exit recorded), in
   // handle order.
   [[nodiscard]] std::vector<BallId> balls_in_sensor(WallId id) const;
+
+  // ---- moving walls (carom/wall_motion.hpp; docs/world.md, "Moving walls") ----
+  // Gives a segment or an arc a rigid motion from now, replacing the one it had: it moves so for
+  // motion.duration, then stands still where the motion left it. Every ball is predicted again
+  // at the next run; under gravity, what rested on the wall falls. A moving wall is met without
+  // the grid (each ball's prediction asks about every moving wall: a game has a few). Under
+  // gravity a ball cannot rest on a wall while it moves (it hops at its rest speed), and rests
+  // on it as on any wall once it stands still. An immovable ball passes through a moving wall.
+  // Refused (InvalidArgument) for a sensor, a box boundary's side, a removed wall, and for
+  // values that are not finite (the duration may be infinite, not negative).
+  void set_wall_motion(WallId wall, const WallMotion& motion);
+  // The motion a wall has from now: its pivot where it is now and the duration left; all zero
+  // for a wall that stands still.
+  [[nodiscard]] WallMotion wall_motion(WallId wall) const;
+  // Removes a wall or a sensor: from now on nothing meets it and no query sees it; its id stays
+  // taken (wall_count() does not change). What rested on it falls; balls recorded inside a
+  // removed sensor leave it without an exit. Refused for a box boundary's side.
+  void remove_wall(WallId wall);
+  [[nodiscard]] bool wall_removed(WallId wall) const;
   // The definition the world was made with, as given.
   [[nodiscard]] const WorldDef& def() const noexcept;
 

@@ -166,10 +166,30 @@ SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const 
   return ball;
 }
 
+// A wall's "motion": {"velocity": [x, y], "angular_velocity": rad per time unit, "pivot": [x, y],
+// "duration": time}, each optional (no duration: for ever).
+std::optional<WallMotion> read_motion(const ObjectFields& fields) {
+  if (!fields.has("motion")) return std::nullopt;
+  const ObjectFields f(fields.source(), fields.at("motion"), fields.path_of("motion"),
+                       {"velocity", "angular_velocity", "pivot", "duration"});
+  WallMotion motion;
+  motion.velocity = f.optional_vector("velocity").value_or(Vec2{});
+  motion.angular_velocity = f.number_or("angular_velocity", 0.0);
+  motion.pivot = f.optional_vector("pivot").value_or(Vec2{});
+  if (f.has("duration")) {
+    motion.duration = f.number("duration");
+    if (!(motion.duration >= 0.0))
+      f.fail("duration", "must be a time >= 0 (leave it out: for ever)");
+  }
+  return motion;
+}
+
 Segment read_segment(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
-                     std::vector<CollisionFilter>& filters) {
-  const ObjectFields f(source, json, path, {"a", "b", "filter"});
+                     std::vector<CollisionFilter>& filters,
+                     std::vector<std::optional<WallMotion>>& motions) {
+  const ObjectFields f(source, json, path, {"a", "b", "filter", "motion"});
   filters.push_back(read_filter(f));
+  motions.push_back(read_motion(f));
   return {f.vector("a"), f.vector("b")};
 }
 
@@ -215,10 +235,12 @@ Arc arc_fields(const ObjectFields& f) {
 }
 
 Arc read_arc(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
-             std::vector<CollisionFilter>& filters) {
+             std::vector<CollisionFilter>& filters,
+             std::vector<std::optional<WallMotion>>& motions) {
   const ObjectFields f(source, json, path,
-                       {"center", "radius", "start_angle", "end_angle", "filter"});
+                       {"center", "radius", "start_angle", "end_angle", "filter", "motion"});
   filters.push_back(read_filter(f));
+  motions.push_back(read_motion(f));
   return arc_fields(f);
 }
 
@@ -404,12 +426,12 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   read_array(top, "balls", scene.balls, read_ball);
   read_array(top, "segments", scene.segments,
              [&scene](const JsonSource& text, const nlohmann::json& item, const JsonPath& at) {
-               return read_segment(text, item, at, scene.segment_filters);
+               return read_segment(text, item, at, scene.segment_filters, scene.segment_motions);
              });
   read_array(top, "polylines", scene.polylines, read_polyline);
   read_array(top, "arcs", scene.arcs,
              [&scene](const JsonSource& text, const nlohmann::json& item, const JsonPath& at) {
-               return read_arc(text, item, at, scene.arc_filters);
+               return read_arc(text, item, at, scene.arc_filters, scene.arc_motions);
              });
   // Every wall with the default filter: none kept (Scene's rule).
   const auto all_default = [](const std::vector<CollisionFilter>& filters) {
@@ -418,6 +440,13 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   };
   if (all_default(scene.segment_filters)) scene.segment_filters.clear();
   if (all_default(scene.arc_filters)) scene.arc_filters.clear();
+  // Likewise the motions: none kept where no wall moves.
+  const auto none_moves = [](const std::vector<std::optional<WallMotion>>& motions) {
+    return std::none_of(motions.begin(), motions.end(),
+                        [](const std::optional<WallMotion>& m) { return m.has_value(); });
+  };
+  if (none_moves(scene.segment_motions)) scene.segment_motions.clear();
+  if (none_moves(scene.arc_motions)) scene.arc_motions.clear();
   read_array(top, "pockets", scene.pockets, read_pocket);
   read_array(top, "sensors", scene.sensors, read_sensor);
   read_array(top, "generators", scene.generators, read_generator);

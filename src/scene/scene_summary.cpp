@@ -22,6 +22,11 @@ SceneSummary summarize(const Scene& scene, std::span<const SceneBall> balls) {
   s.balls = balls.size();
   s.pockets = scene.pockets.size();
   s.sensors = scene.sensors.size();
+  for (const auto* motions : {&scene.segment_motions, &scene.arc_motions}) {
+    s.moving_walls += static_cast<std::size_t>(
+        std::count_if(motions->begin(), motions->end(),
+                      [](const std::optional<WallMotion>& m) { return m.has_value(); }));
+  }
   s.walls = scene_detail::scene_walls(scene).size();
   double largest = 0.0;
   for (const SceneBall& b : balls) {

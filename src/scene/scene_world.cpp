@@ -108,10 +108,21 @@ SceneWorld make_world(const Scene& scene) {
                               "must be empty or one for each (" + std::to_string(count) + ")");
       }
     }
+    for (const auto& [motions, count, name] :
+         {std::tuple{&scene.segment_motions, scene.segments.size(), "scene.segment_motions"},
+          std::tuple{&scene.arc_motions, scene.arcs.size(), "scene.arc_motions"}}) {
+      if (!motions->empty() && motions->size() != count) {
+        throw InvalidArgument("make_world", name, std::to_string(motions->size()) + " motions",
+                              "must be empty or one for each (" + std::to_string(count) + ")");
+      }
+    }
     // Each wall's filter before any ball, so that placing balls honours it.
     for (std::size_t i = 0; i < scene.segments.size(); ++i) {
       const WallId wall = sw.world.add_segment(scene.segments[i]);
       if (!scene.segment_filters.empty()) sw.world.set_wall_filter(wall, scene.segment_filters[i]);
+      if (!scene.segment_motions.empty() && scene.segment_motions[i]) {
+        sw.world.set_wall_motion(wall, *scene.segment_motions[i]);
+      }
     }
     for (const ScenePolyline& polyline : scene.polylines) {
       const WallId first = sw.world.add_polyline(polyline.points, polyline.closed);
@@ -122,6 +133,9 @@ SceneWorld make_world(const Scene& scene) {
     for (std::size_t i = 0; i < scene.arcs.size(); ++i) {
       const WallId wall = sw.world.add_arc(scene.arcs[i]);
       if (!scene.arc_filters.empty()) sw.world.set_wall_filter(wall, scene.arc_filters[i]);
+      if (!scene.arc_motions.empty() && scene.arc_motions[i]) {
+        sw.world.set_wall_motion(wall, *scene.arc_motions[i]);
+      }
     }
   } catch (const InvalidArgument& error) {
     throw world_refused("segments", error);
@@ -304,8 +318,47 @@ std::uint64_t run_scene_collisions(SceneWorld& sw, std::uint64_t count,
   return collisions_with_thermostat(sw, count, contacts, potted, time_limit);
 }
 
+namespace {
+
+// The scene's walls before the sensors: its segments, its polylines' segments, its arcs.
+std::size_t scene_wall_count(const Scene& scene) {
+  std::size_t count = scene.segments.size() + scene.arcs.size();
+  for (const ScenePolyline& p : scene.polylines) {
+    count += p.closed && p.points.size() > 2 ? p.points.size() : p.points.size() - 1;
+  }
+  return count;
+}
+
+// The id of the scene's first wall: the world's walls less the scene's and its sensors.
+WallId first_scene_wall(const SceneWorld& sw) {
+  return static_cast<WallId>(sw.world.wall_count() - scene_wall_count(sw.scene) -
+                             sw.scene.sensors.size());
+}
+
+}  // namespace
+
+WallId segment_wall(const SceneWorld& sw, std::size_t i) {
+  return first_scene_wall(sw) + static_cast<WallId>(i);
+}
+
+WallId arc_wall(const SceneWorld& sw, std::size_t i) {
+  return first_scene_wall(sw) +
+         static_cast<WallId>(scene_wall_count(sw.scene) - sw.scene.arcs.size() + i);
+}
+
 Scene capture_scene(const SceneWorld& sw) {
   Scene scene = sw.scene;
+  // Moving walls where they are now, with what is left of their motions.
+  for (std::size_t i = 0; i < scene.segment_motions.size(); ++i) {
+    if (!scene.segment_motions[i]) continue;
+    scene.segments[i] = std::get<Segment>(sw.world.wall(segment_wall(sw, i)));
+    scene.segment_motions[i] = sw.world.wall_motion(segment_wall(sw, i));
+  }
+  for (std::size_t i = 0; i < scene.arc_motions.size(); ++i) {
+    if (!scene.arc_motions[i]) continue;
+    scene.arcs[i] = std::get<Arc>(sw.world.wall(arc_wall(sw, i)));
+    scene.arc_motions[i] = sw.world.wall_motion(arc_wall(sw, i));
+  }
   scene.balls.clear();
   scene.generators.clear();
   scene.time = sw.time();

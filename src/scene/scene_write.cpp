@@ -65,6 +65,17 @@ void add_filter(Line& line, const CollisionFilter& f) {
   line.add("filter", filter.done());
 }
 
+// A wall's motion, every field written (a duration only when it ends).
+void add_motion(Line& line, const std::optional<WallMotion>& motion) {
+  if (!motion) return;
+  Line fields;
+  fields.add("velocity", vec(motion->velocity))
+      .add("angular_velocity", num(motion->angular_velocity))
+      .add("pivot", vec(motion->pivot));
+  if (std::isfinite(motion->duration)) fields.add("duration", num(motion->duration));
+  line.add("motion", fields.done());
+}
+
 std::string ball_line(const SceneBall& b) {
   Line line;
   if (b.name) line.add("name", str(*b.name));
@@ -165,6 +176,7 @@ std::string to_json_text(const Scene& scene) {
     Line line;
     line.add("a", vec(s.a)).add("b", vec(s.b));
     if (!scene.segment_filters.empty()) add_filter(line, scene.segment_filters[segment]);
+    if (!scene.segment_motions.empty()) add_motion(line, scene.segment_motions[segment]);
     ++segment;
     return line.done();
   });
@@ -177,6 +189,7 @@ std::string to_json_text(const Scene& scene) {
         .add("start_angle", num(a.start_angle))
         .add("end_angle", num(a.end_angle));
     if (!scene.arc_filters.empty()) add_filter(line, scene.arc_filters[arc]);
+    if (!scene.arc_motions.empty()) add_motion(line, scene.arc_motions[arc]);
     ++arc;
     return line.done();
   });

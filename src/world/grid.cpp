@@ -100,6 +100,10 @@ void Grid::set_walls(std::span<const Vec2> lower, std::span<const Vec2> upper) {
   std::vector<CellSpan> spans(lower.size());
   wall_start_.assign(cells + 1, 0);
   for (std::size_t w = 0; w < lower.size(); ++w) {
+    if (!(lower[w].x <= upper[w].x)) {
+      spans[w] = {0, -1, 0, -1};  // an empty box: the wall is in no cell
+      continue;
+    }
     spans[w] = wall_cells(lower[w], upper[w]);
     for (std::int32_t y = spans[w].y0; y <= spans[w].y1; ++y) {
       for (std::int32_t x = spans[w].x0; x <= spans[w].x1; ++x)

@@ -115,6 +115,10 @@ CAROM_ALWAYS_INLINE inline bool World::Impl::start_prediction(std::uint32_t ball
   }
   if (!sensor_inside.empty()) [[unlikely]]
     consider_inside_sensors(best, ball, shape, Motion{v, {}}, kFarFuture);
+  if (!moving_walls.empty()) [[unlikely]] {
+    consider_moving_walls(best, ball, shape, Motion{v, {}},
+                          best.time < kInfinity ? best.time - time : kFarFuture);
+  }
 
   // Balls in the neighbouring cells, next. Away from the grid's edges the 3×3 block is three
   // runs of three cells and, in a periodic world, no difference needs the minimum image:

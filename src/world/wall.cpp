@@ -30,6 +30,43 @@ Wall make_disc_sensor(const Ball& disc, SensorRole role) {
   return wall;
 }
 
+double path_time(const Wall& wall, double t) {
+  return std::max(0.0, std::min(t, wall.path.until) - wall.path.start);
+}
+
+RigidMotion motion_from(const Wall& wall, double t) {
+  RigidMotion rigid = wall.path.rigid;
+  rigid.pivot = rigid.pivot + rigid.velocity * path_time(wall, t);
+  if (!wall.moves_at(t)) {
+    rigid.velocity = Vec2{};
+    rigid.angular_velocity = 0.0;
+  }
+  return rigid;
+}
+
+void place_at(Wall& wall, double t) {
+  if (!wall.moving) return;
+  const double elapsed = path_time(wall, t);
+  if (wall.is_arc) {
+    wall.arc = wall.path.arc;
+    wall.frame = wall.path.frame;
+    carry_arc(wall.arc, wall.frame, wall.path.rigid, elapsed);
+  } else {
+    wall.segment = carried_segment(wall.path.segment, wall.path.rigid, elapsed);
+  }
+}
+
+void set_path(Wall& wall, double t, const RigidMotion& rigid, double duration) {
+  place_at(wall, t);
+  wall.moving = true;
+  wall.path.rigid = rigid;
+  wall.path.start = t;
+  wall.path.until = t + duration;
+  wall.path.segment = wall.segment;
+  wall.path.arc = wall.arc;
+  wall.path.frame = wall.frame;
+}
+
 SensorRole sensor_role(SensorAction action) {
   return action == SensorAction::remove_ball ? SensorRole::remove_ball : SensorRole::report;
 }

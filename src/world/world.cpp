@@ -95,6 +95,9 @@ std::string World::Impl::overlap_at(Vec2 p, double r, std::uint32_t except,
   for (const std::uint32_t w : grid.walls(home)) {
     if (overlaps_wall(w)) return "it overlaps wall " + std::to_string(w);
   }
+  for (const std::uint32_t w : moving_walls) {
+    if (overlaps_wall(w)) return "it overlaps wall " + std::to_string(w);
+  }
   std::string found;
   grid.for_each_neighbour(home, [&](std::int32_t cell) {
     for (std::int32_t j = grid.first_ball(cell); j != detail::kNoBall && found.empty();
@@ -348,6 +351,51 @@ std::vector<BallId> World::balls_in_sensor(WallId id) const {
 }
 
 std::span<const SensorEvent> World::sensor_events() const noexcept { return impl_->sensor_events; }
+
+void World::set_wall_motion(WallId wall, const WallMotion& motion) {
+  constexpr const char* kFunction = "World::set_wall_motion";
+  Impl& w = *impl_;
+  detail::Wall& target = w.changeable_wall(kFunction, wall);
+  if (target.sensor != detail::SensorRole::none) {
+    refuse(kFunction, "wall", std::to_string(wall), "is a sensor: sensors stand still");
+  }
+  detail::require_finite(kFunction, "motion.velocity", motion.velocity);
+  detail::require_finite(kFunction, "motion.angular_velocity", motion.angular_velocity);
+  detail::require_finite(kFunction, "motion.pivot", motion.pivot);
+  detail::require_that(motion.duration >= 0.0, kFunction, "motion.duration", motion.duration,
+                       "must be a number >= 0 (infinite: for ever)");
+  w.free_resting_on(wall);
+  detail::set_path(target, w.time, {motion.velocity, motion.angular_velocity, motion.pivot},
+                   motion.duration);
+  const auto at = std::lower_bound(w.moving_walls.begin(), w.moving_walls.end(), wall);
+  if (at == w.moving_walls.end() || *at != wall) w.moving_walls.insert(at, wall);
+  if (w.grid_valid) w.list_walls();
+  w.events_valid = false;
+}
+
+WallMotion World::wall_motion(WallId wall) const {
+  const Impl& w = *impl_;
+  const detail::Wall& named = wall_named("World::wall_motion", w.walls, wall);
+  if (!named.moves_at(w.time)) return WallMotion{{}, 0.0, {}, 0.0};
+  const detail::RigidMotion rigid = detail::motion_from(named, w.time);
+  return {rigid.velocity, rigid.angular_velocity, rigid.pivot, named.path.until - w.time};
+}
+
+void World::remove_wall(WallId wall) {
+  constexpr const char* kFunction = "World::remove_wall";
+  Impl& w = *impl_;
+  detail::Wall& target = w.changeable_wall(kFunction, wall);
+  w.free_resting_on(wall);
+  target.removed = true;
+  std::erase_if(w.sensor_inside,
+                [&](std::uint64_t key) { return static_cast<WallId>(key & 0xffffffffU) == wall; });
+  if (w.grid_valid) w.list_walls();
+  w.events_valid = false;
+}
+
+bool World::wall_removed(WallId wall) const {
+  return wall_named("World::wall_removed", impl_->walls, wall).removed;
+}
 
 const WorldDef& World::def() const noexcept { return impl_->def; }
 
@@ -624,18 +672,7 @@ void World::set_wall_filter(WallId wall, const CollisionFilter& filter) {
   w.walls[wall].filter = number;
   // A ball's pending wall contact names the wall without a version: every ball predicts again
   // at the next run; a ball resting or sliding on the wall is no longer carried by it.
-  if (w.gravity_on) {
-    w.for_each_live([&](std::uint32_t slot) {
-      const detail::Carriage& carriage = w.carriages[slot];
-      for (std::uint8_t k = 0; k < carriage.supports; ++k) {
-        if (carriage.support[k] == wall) {
-          w.advance(slot, w.time);
-          w.disturb(slot);
-          break;
-        }
-      }
-    });
-  }
+  w.free_resting_on(wall);
   w.events_valid = false;
 }
 

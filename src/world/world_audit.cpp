@@ -146,6 +146,9 @@ Violation World::Impl::audit_with_grid(double tolerance) const {
     for (const std::uint32_t k : grid.walls(cell)) {
       if (Violation v = audit_wall(i, p, k, tolerance)) return v;
     }
+    for (const std::uint32_t k : w.moving_walls) {
+      if (Violation v = audit_wall(i, p, k, tolerance)) return v;
+    }
     Violation found;
     grid.for_each_neighbour(cell, [&](std::int32_t neighbour) {
       for (std::int32_t j = grid.first_ball(neighbour); j != detail::kNoBall && !found;

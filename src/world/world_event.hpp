@@ -31,6 +31,10 @@ inline constexpr std::uint32_t kClearBehind = 1;
 // A ball_wall event's partner_version is this where the wall is a sensor: the event is the ball's
 // next enter or exit there, not a contact.
 inline constexpr std::uint32_t kSensorEvent = 1;
+// A ball_wall event's partner_version where the wall moves (world_moving_walls.cpp): a contact,
+// or a time to look again (the wall's path ends, or the search for a contact stopped short).
+inline constexpr std::uint32_t kMovingWallContact = 2;
+inline constexpr std::uint32_t kMovingWallLook = 3;
 
 // Time, then kind, then the balls' handles (for two balls the pair in ascending order, then the
 // owner), so that simultaneous events are processed in one documented, deterministic order.

@@ -167,6 +167,7 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
     if (impact.hit) consider(impact.t, EventKind::ball_wall, w, 0);
   }
   if (!sensor_inside.empty()) consider_inside_sensors(best, ball, shape, motion, horizon());
+  if (!moving_walls.empty()) consider_moving_walls(best, ball, shape, motion, horizon());
 
   // The balls of the 3×3 block: by their offsets as they are, as the minimum image, or, in a
   // periodic grid with few cells, at all nine images (as prediction_steps.hpp takes them).
@@ -284,6 +285,7 @@ bool World::Impl::process_general(const Event& event) {
     case EventKind::ball_wall:
       if (event.partner_version == detail::kSensorEvent)
         return process_sensor(i, event.partner, event.time);
+      if (event.partner_version != 0) return process_moving_wall(event);
       return gravity_on ? resolve_wall_under_gravity(i, event.partner, event.time)
                         : resolve_wall_under_growth(i, event.partner, event.time);
     case EventKind::cell_crossing:

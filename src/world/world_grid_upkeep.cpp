@@ -75,6 +75,7 @@ void World::Impl::rebuild_grid(Vec2 extra_point, double extra_radius) {
     upper = {std::max(upper.x, p.x), std::max(upper.y, p.y)};
   }
   for (const detail::Wall& wall : walls) {
+    if (!wall.listed()) continue;  // (moving walls are met without the grid)
     Vec2 wall_lower;
     Vec2 wall_upper;
     detail::bounds(wall, wall_lower, wall_upper);
@@ -125,7 +126,13 @@ void World::Impl::list_walls() {
   std::vector<Vec2> wall_lower(walls.size());
   std::vector<Vec2> wall_upper(walls.size());
   for (std::size_t w = 0; w < walls.size(); ++w) {
-    detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
+    if (walls[w].listed()) {
+      detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
+    } else {
+      // Moving and removed walls are in no cell: an empty box.
+      wall_lower[w] = {kInfinity, kInfinity};
+      wall_upper[w] = {-kInfinity, -kInfinity};
+    }
   }
   grid.set_walls(wall_lower, wall_upper);
 }

@@ -64,6 +64,7 @@ void World::Impl::predict_growing(std::uint32_t ball, std::uint32_t crossed) {
     if (impact.hit) consider(impact.t, EventKind::ball_wall, w, 0);
   }
   if (!sensor_inside.empty()) consider_inside_sensors(best, ball, shape, motion, horizon());
+  if (!moving_walls.empty()) consider_moving_walls(best, ball, shape, motion, horizon());
 
   // A neighbour's radius now and growth speed, as radius_at and growth_of give them.
   struct Size {

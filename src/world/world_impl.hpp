@@ -73,9 +73,10 @@ struct World::Impl : detail::BallStore {
   // so kept (and sized) only when def.collapse_time > 0, saving 8 bytes a ball otherwise.
   std::vector<double> last_contact_times;
   std::vector<detail::Wall> walls;
-  std::uint32_t boundary_walls = 0;  // the box boundary's four walls come first
-  PeriodicCell periodic_cell;        // the boundary of a periodic world
-  double largest_radius = 0.0;       // of every ball ever added (never lowered: cells stay valid)
+  std::vector<std::uint32_t> moving_walls;  // the ids of the walls with a path, ascending
+  std::uint32_t boundary_walls = 0;         // the box boundary's four walls come first
+  PeriodicCell periodic_cell;               // the boundary of a periodic world
+  double largest_radius = 0.0;  // of every ball ever added (never lowered: cells stay valid)
 
   detail::Grid grid;
   // Prediction's batch of pairs (predict_named), kept here rather than on the stack: its 2.4 KB
@@ -240,6 +241,22 @@ struct World::Impl : detail::BallStore {
   // A ball's enter or exit at a sensor at t: recorded, and the ball removed (a pocket) or
   // predicted again. Never a contact.
   bool process_sensor(std::uint32_t ball, std::uint32_t wall, double t);
+  // ---- moving walls (world_moving_walls.cpp) ----
+  // Whether a ball rests or slides on a wall (under gravity).
+  [[nodiscard]] bool rests_on(std::uint32_t ball, std::uint32_t wall) const;
+  // Keeps in `best` the earlier of it and the ball's next event with each moving wall within
+  // `horizon`: a contact, or a time to look again.
+  void consider_moving_walls(detail::Event& best, std::uint32_t ball, const Ball& shape,
+                             const Motion& motion, double horizon) const;
+  // A ball_wall event of a moving wall.
+  bool process_moving_wall(const detail::Event& event);
+  // Brings every moving wall's shape to the world's time (for the queries, the audit, wall()).
+  void place_moving_walls();
+  // The wall `id` that a change between runs (set_wall_motion, remove_wall) may be made to: not a
+  // side of the box boundary, not removed; refused (naming `function`) otherwise.
+  detail::Wall& changeable_wall(const char* function, std::uint32_t id);
+  // Under gravity, the balls resting or sliding on wall `id` fall (it changes).
+  void free_resting_on(std::uint32_t id);
   // Adds a wall or a sensor (validated) and lists it; its id.
   WallId add_wall(const char* function, const char* argument, const detail::Wall& wall);
   // Forgets the sensor pairs of a ball that is gone.
@@ -284,9 +301,15 @@ struct World::Impl : detail::BallStore {
   void load_carriage(detail::ByteReader& in, std::uint32_t slot, const std::string& which);
   void load_filters(detail::ByteReader& in);
   void load_sensors(detail::ByteReader& in);
-  [[nodiscard]] bool has_sensors() const {
+  void load_wall_changes(detail::ByteReader& in);
+  [[nodiscard]] bool has_wall_changes() const {
     return std::any_of(walls.begin(), walls.end(),
-                       [](const detail::Wall& wall) { return !wall.solid(); });
+                       [](const detail::Wall& wall) { return wall.moving || wall.removed; });
+  }
+  [[nodiscard]] bool has_sensors() const {
+    return std::any_of(walls.begin(), walls.end(), [](const detail::Wall& wall) {
+      return wall.sensor != detail::SensorRole::none;
+    });
   }
 
   // ---- the grid's upkeep (world_grid_upkeep.cpp) ----

@@ -41,6 +41,8 @@ bool World::Impl::no_contact_ever() const {
   // nothing is proved (a run with no end time is then ended by its time limit, or by the queue
   // running dry).
   if (general_motion) return false;
+  // A moving wall's reach is not followed here: nothing is proved.
+  if (!moving_walls.empty()) return false;
 
   if (def.boundary == Boundary::periodic) {
     if (!walls.empty()) return false;

@@ -195,6 +195,13 @@ class QueryVisitor {
       static_cast<void>(done(1.0));
       return;
     }
+    // Moving walls are listed in no cell: each is weighed first.
+    if (filter_.walls) {
+      for (const std::uint32_t id : w_.moving_walls) {
+        wall_seen_[id] = 1;
+        if (sees_wall(id)) wall(id);
+      }
+    }
     QueryWalk<State> walk(w_, margin(w_, reach));
     walk.along(
         a, d,

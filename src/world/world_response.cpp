@@ -58,8 +58,11 @@ bool World::Impl::process(const Event& event) {
       return resolve_ball_ball(i, j, event.time);
     }
     case EventKind::ball_wall:
-      if (event.partner_version == detail::kSensorEvent) [[unlikely]]
-        return process_sensor(i, event.partner, event.time);
+      if (event.partner_version != 0) [[unlikely]] {
+        return event.partner_version == detail::kSensorEvent
+                   ? process_sensor(i, event.partner, event.time)
+                   : process_moving_wall(event);
+      }
       return resolve_ball_wall(i, event.partner, event.time);
     case EventKind::cell_crossing:
       cross_cell(i, event.partner, event.time, event.partner_version == detail::kClearBehind);

@@ -112,6 +112,17 @@ struct World::Impl::RunGuard {
 
 std::uint64_t World::Impl::run(const char* function, RunGoal goal, double end,
                                std::uint64_t max_contacts) {
+  // However the run ends, the moving walls' shapes are brought to its end (queries, the audit
+  // and wall() read them).
+  struct PlaceWallsAtEnd {
+    Impl& world;
+    explicit PlaceWallsAtEnd(Impl& w) : world(w) {}
+    PlaceWallsAtEnd(const PlaceWallsAtEnd&) = delete;
+    PlaceWallsAtEnd& operator=(const PlaceWallsAtEnd&) = delete;
+    ~PlaceWallsAtEnd() {
+      if (!world.moving_walls.empty()) world.place_moving_walls();
+    }
+  } place_walls_at_end{*this};
   contacts.clear();
   sensor_events.clear();
   stop_reason = StopReason::none;

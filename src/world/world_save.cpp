@@ -8,6 +8,7 @@
 #include <fstream>
 #include <istream>
 #include <limits>
+#include <numbers>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -43,7 +44,11 @@ constexpr std::uint32_t kFiltersFlag = 0x100;
 // Added likewise: the world has sensors (a sensor's disc is wall kind 2), saved after the filters:
 // each wall's sensor role, then the (ball, sensor) pairs recorded inside.
 constexpr std::uint32_t kSensorsFlag = 0x200;
-constexpr std::uint32_t kFlags = kFiltersFlag | kSensorsFlag;
+// Added likewise: some wall moves or was removed, saved last: each such wall's id, whether it was
+// removed, and a moving wall's path (its rigid motion, start and end, and its shape at the start,
+// the arc's prepared frame included).
+constexpr std::uint32_t kWallChangesFlag = 0x400;
+constexpr std::uint32_t kFlags = kFiltersFlag | kSensorsFlag | kWallChangesFlag;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -253,12 +258,48 @@ std::string World::Impl::save_payload() const {
     out.u64(sensor_inside.size());
     for (const std::uint64_t key : sensor_inside) out.u64(key);
   }
+  if (has_wall_changes()) {
+    std::uint32_t changed = 0;
+    for (const detail::Wall& wall : walls) changed += wall.moving || wall.removed ? 1U : 0U;
+    out.u32(changed);
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+      const detail::Wall& wall = walls[w];
+      if (!wall.moving && !wall.removed) continue;
+      out.u32(w);
+      out.u8(wall.removed ? 1 : 0);
+      out.u8(wall.moving ? 1 : 0);
+      if (!wall.moving) continue;
+      const detail::WallPath& path = wall.path;
+      out.vec2(path.rigid.velocity);
+      out.f64(path.rigid.angular_velocity);
+      out.vec2(path.rigid.pivot);
+      out.f64(path.start);
+      out.f64(path.until);
+      if (wall.is_arc) {
+        out.vec2(path.arc.center);
+        out.f64(path.arc.radius);
+        out.f64(path.arc.start_angle);
+        out.f64(path.arc.end_angle);
+        out.vec2(path.frame.center);
+        out.f64(path.frame.radius);
+        out.f64(path.frame.span);
+        out.vec2(path.frame.start_direction);
+        out.vec2(path.frame.end_direction);
+        out.vec2(path.frame.start_point);
+        out.vec2(path.frame.end_point);
+      } else {
+        out.vec2(path.segment.a);
+        out.vec2(path.segment.b);
+      }
+    }
+  }
   return out.bytes();
 }
 
 std::uint32_t World::Impl::save_version() const {
-  const std::uint32_t flags =
-      (filters.active() ? kFiltersFlag : 0U) | (has_sensors() ? kSensorsFlag : 0U);
+  const std::uint32_t flags = (filters.active() ? kFiltersFlag : 0U) |
+                              (has_sensors() ? kSensorsFlag : 0U) |
+                              (has_wall_changes() ? kWallChangesFlag : 0U);
   if (gravity_on) return kGravityVersion | flags;
   return (growth_on ? kGrowthVersion : kVersion) | flags;
 }
@@ -503,6 +544,7 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
   }
   if ((flagged_version & kFiltersFlag) != 0) load_filters(in);
   if ((flagged_version & kSensorsFlag) != 0) load_sensors(in);
+  if ((flagged_version & kWallChangesFlag) != 0) load_wall_changes(in);
   if (in.remaining() != 0) {
     in.inconsistent("payload", std::to_string(in.remaining()) + " bytes", "left over at the end");
   }
@@ -555,7 +597,7 @@ void World::Impl::load_sensors(ByteReader& in) {
     const auto handle = static_cast<std::uint32_t>(key >> 32);
     const auto wall = static_cast<std::uint32_t>(key & 0xffffffffU);
     const bool named = handle < slot_of_handle.size() && balls[slot_of_handle[handle]].alive() &&
-                       wall < walls.size() && !walls[wall].solid();
+                       wall < walls.size() && walls[wall].sensor != detail::SensorRole::none;
     if (!named || (k > 0 && key <= previous)) {
       in.inconsistent("sensor pair", std::to_string(handle) + ", " + std::to_string(wall),
                       "a live ball and a sensor, in ascending order");
@@ -563,6 +605,78 @@ void World::Impl::load_sensors(ByteReader& in) {
     sensor_inside.insert(sensor_inside.end(), key);
     previous = key;
   }
+}
+
+// The moving and removed walls' section: ascending ids of walls that may change (no side of a
+// box; a moving wall a segment or an arc that is no sensor), finite paths that start no later than
+// they end. Each moving wall's shape is then brought to the world's time, as it was when saved.
+void World::Impl::load_wall_changes(ByteReader& in) {
+  const std::uint32_t count = in.u32("changed wall count");
+  if (count > walls.size()) {
+    in.inconsistent("changed wall count", std::to_string(count), "more than the walls");
+  }
+  std::uint32_t previous = 0;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::uint32_t w = in.u32("changed wall");
+    const bool box_side = def.boundary == Boundary::box && w < 4;
+    if (w >= walls.size() || box_side || (k > 0 && w <= previous)) {
+      in.inconsistent("changed wall", std::to_string(w),
+                      "a wall that may change (no side of the box), in ascending order");
+    }
+    previous = w;
+    detail::Wall& wall = walls[w];
+    const std::uint8_t removed = in.u8("wall removed");
+    const std::uint8_t moving = in.u8("wall moving");
+    if (removed > 1 || moving > 1 || (removed == 0 && moving == 0) ||
+        (moving == 1 && (wall.is_disc || wall.sensor != detail::SensorRole::none))) {
+      in.inconsistent("changed wall " + std::to_string(w),
+                      std::to_string(removed) + ", " + std::to_string(moving),
+                      "removed or moving (0 or 1, not both 0); only a solid segment or arc moves");
+    }
+    wall.removed = removed == 1;
+    wall.moving = moving == 1;
+    if (!wall.moving) continue;
+    detail::WallPath& path = wall.path;
+    path.rigid.velocity = in.vec2("wall path velocity");
+    path.rigid.angular_velocity = in.f64("wall path angular velocity");
+    path.rigid.pivot = in.vec2("wall path pivot");
+    path.start = in.f64("wall path start");
+    path.until = in.f64("wall path end");
+    bool shape_valid = true;
+    if (wall.is_arc) {
+      path.arc.center = in.vec2("wall path arc");
+      path.arc.radius = in.f64("wall path arc");
+      path.arc.start_angle = in.f64("wall path arc");
+      path.arc.end_angle = in.f64("wall path arc");
+      path.frame.center = in.vec2("wall path arc frame");
+      path.frame.radius = in.f64("wall path arc frame");
+      path.frame.span = in.f64("wall path arc frame");
+      path.frame.start_direction = in.vec2("wall path arc frame");
+      path.frame.end_direction = in.vec2("wall path arc frame");
+      path.frame.start_point = in.vec2("wall path arc frame");
+      path.frame.end_point = in.vec2("wall path arc frame");
+      const detail::ArcFrame& f = path.frame;
+      shape_valid = finite(path.arc.center) && std::isfinite(path.arc.radius) &&
+                    path.arc.radius > 0.0 && std::isfinite(path.arc.start_angle) &&
+                    std::isfinite(path.arc.end_angle) && finite(f.center) && f.radius > 0.0 &&
+                    std::isfinite(f.radius) && f.span >= 0.0 && f.span <= 2.0 * std::numbers::pi &&
+                    finite(f.start_direction) && finite(f.end_direction) && finite(f.start_point) &&
+                    finite(f.end_point);
+    } else {
+      path.segment.a = in.vec2("wall path segment");
+      path.segment.b = in.vec2("wall path segment");
+      shape_valid = finite(path.segment.a) && finite(path.segment.b);
+    }
+    if (!shape_valid || !finite(path.rigid.velocity) ||
+        !std::isfinite(path.rigid.angular_velocity) || !finite(path.rigid.pivot) ||
+        !std::isfinite(path.start) || std::isnan(path.until) || path.until < path.start) {
+      in.inconsistent("wall path " + std::to_string(w), number_text(path.start),
+                      "finite motion, pivot and shape, starting no later than it ends");
+    }
+    moving_walls.push_back(w);
+    detail::place_at(wall, time);
+  }
+  if (grid_valid) list_walls();
 }
 
 // A slot's carriage (version 3), checked for what it names: walls that exist, handles within the
@@ -653,12 +767,7 @@ void World::Impl::load_grid(ByteReader& in) {
     seen[ball] = true;
   }
   for (std::size_t k = order.size(); k-- > 0;) grid.insert(order[k], cell_of[order[k]]);
-  std::vector<Vec2> wall_lower(walls.size());
-  std::vector<Vec2> wall_upper(walls.size());
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    detail::bounds(walls[w], wall_lower[w], wall_upper[w]);
-  }
-  grid.set_walls(wall_lower, wall_upper);
+  list_walls();
 }
 
 World World::load(std::istream& in) {

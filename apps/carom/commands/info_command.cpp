@@ -48,6 +48,7 @@ int run(const InfoOptions& options) {
     json["walls"] = s.walls;
     json["pockets"] = s.pockets;
     json["sensors"] = s.sensors;
+    json["moving_walls"] = s.moving_walls;
     json["packing_fraction"] =
         s.packing_fraction ? nlohmann::ordered_json(*s.packing_fraction) : nullptr;
     json["kinetic_energy"] = s.kinetic_energy;
@@ -105,6 +106,7 @@ int run(const InfoOptions& options) {
   text += "walls             " + std::to_string(s.walls) + "\n";
   text += "pockets           " + std::to_string(s.pockets) + "\n";
   if (s.sensors > 0) text += "sensors           " + std::to_string(s.sensors) + "\n";
+  if (s.moving_walls > 0) text += "moving walls      " + std::to_string(s.moving_walls) + "\n";
   if (s.packing_fraction) text += "packing fraction  " + readable(*s.packing_fraction) + "\n";
   text += "kinetic energy    " + readable(s.kinetic_energy) + "\n";
   if (gravity) {

@@ -140,14 +140,25 @@ ScenePicture draw_scene(const SceneWorld& scene_world, const PictureStyle& style
     picture.clip = ViewBox{settings.lower, settings.upper};
   }
 
-  for (const Segment& s : scene.segments)
+  // A moving wall is drawn where it is now.
+  for (std::size_t i = 0; i < scene.segments.size(); ++i) {
+    const bool moves = !scene.segment_motions.empty() && scene.segment_motions[i];
+    const Segment s = moves
+                          ? std::get<Segment>(scene_world.world.wall(segment_wall(scene_world, i)))
+                          : scene.segments[i];
     picture.walls.push_back({{s.a, s.b}, kWallColour, kWallWidth});
+  }
   for (const ScenePolyline& p : scene.polylines) {
     std::vector<Vec2> points = p.points;
     if (p.closed && !points.empty()) points.push_back(points.front());
     picture.walls.push_back({std::move(points), kWallColour, kWallWidth});
   }
-  for (const Arc& a : scene.arcs) picture.walls.push_back({arc_points(a), kWallColour, kWallWidth});
+  for (std::size_t i = 0; i < scene.arcs.size(); ++i) {
+    const bool moves = !scene.arc_motions.empty() && scene.arc_motions[i];
+    const Arc a =
+        moves ? std::get<Arc>(scene_world.world.wall(arc_wall(scene_world, i))) : scene.arcs[i];
+    picture.walls.push_back({arc_points(a), kWallColour, kWallWidth});
+  }
   for (const ScenePocket& p : scene.pockets) {
     picture.pockets.push_back({p.position, p.radius, kPocketColour});
   }

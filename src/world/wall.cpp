@@ -65,6 +65,15 @@ void set_path(Wall& wall, double t, const RigidMotion& rigid, double duration) {
   wall.path.segment = wall.segment;
   wall.path.arc = wall.arc;
   wall.path.frame = wall.frame;
+  wall.path.reach = path_reach(wall);
+  wall.path.speed = length(rigid.velocity);
+}
+
+double path_reach(const Wall& wall) {
+  const WallPath& path = wall.path;
+  const Vec2 pivot = path.rigid.pivot;
+  return wall.is_arc ? length(path.frame.center - pivot) + path.frame.radius
+                     : std::max(length(path.segment.a - pivot), length(path.segment.b - pivot));
 }
 
 SensorRole sensor_role(SensorAction action) {

@@ -25,6 +25,8 @@ struct WallPath {
   RigidMotion rigid;
   double start = 0.0;
   double until = std::numeric_limits<double>::infinity();
+  double reach = 0.0;  // the farthest point of the wall from the pivot
+  double speed = 0.0;  // the pivot's
   Segment segment;
   Arc arc;
   ArcFrame frame;
@@ -62,6 +64,8 @@ struct Wall {
 [[nodiscard]] RigidMotion motion_from(const Wall& wall, double t);
 // Brings a moving wall's shape to where its path has carried it at t.
 void place_at(Wall& wall, double t);
+// The farthest point of a moving wall's shape at its path's start from the pivot then.
+[[nodiscard]] double path_reach(const Wall& wall);
 // A moving wall's path, from t on: the shape as at t, which moves by `rigid` for `duration`.
 void set_path(Wall& wall, double t, const RigidMotion& rigid, double duration);
 

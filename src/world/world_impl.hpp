@@ -109,8 +109,8 @@ struct World::Impl : detail::BallStore {
   // Whether some ball's restitution differs from def.restitution; until then contacts need not
   // read the balls' infos (a cache miss each in a large world).
   bool mixed_restitution = false;
-  // Whether a moving immovable ball has met a ball in this run: a run that would never end is
-  // then refused as a crush.
+  // Whether a moving immovable ball or a moving wall has met a ball in this run: a run that
+  // would never end is then refused as a crush.
   bool mover_met = false;
   // Whether def.gravity is not zero: only then do the parts for accelerated motion run, so that a
   // world without gravity takes exactly the paths it always took.

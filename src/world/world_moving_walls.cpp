@@ -31,6 +31,9 @@ void World::Impl::consider_moving_walls(Event& best, std::uint32_t ball, const B
                                         const Motion& motion, double horizon) const {
   // An immovable ball and a moving wall pass through each other: neither can give way.
   if (!movable(ball)) return;
+  // (Square roots of sums of squares: std::hypot, which length() is, is a slow call here.)
+  const double speed = std::sqrt(length_squared(motion.velocity));
+  const double pull = std::sqrt(length_squared(motion.acceleration));
   for (const std::uint32_t w : moving_walls) {
     const detail::Wall& wall = walls[w];
     if (wall.removed || !meets_wall(ball, w) || rests_on(ball, w)) continue;
@@ -39,10 +42,21 @@ void World::Impl::consider_moving_walls(Event& best, std::uint32_t ball, const B
     const double sooner = best.time < kInfinity ? best.time - time : kFarFuture;
     const bool moves = wall.moves_at(time);
     const double ends = moves ? wall.path.until - time : kInfinity;
-    const double search = std::min({horizon, sooner, ends});
+    const double within = std::min(horizon, sooner);
+    const double search = std::min(within, ends);
+    // Out of reach: within `within` the ball keeps within its travel of where it is, and the
+    // wall within its reach of the pivot, which moves at most its velocity's travel (for the
+    // most part of the world the horizon, a cell's exit, ends the question here).
+    const Vec2 pivot =
+        wall.path.rigid.pivot + wall.path.rigid.velocity * detail::path_time(wall, time);
+    const double travel =
+        within < kFarFuture ? (speed + 0.5 * pull * within + motion.growth) * within : kInfinity;
+    const double reach =
+        (shape.radius + travel + wall.path.reach + wall.path.speed * search) * (1.0 + 0x1p-30);
+    if (length_squared(shape.center - pivot) > reach * reach) continue;
+    const detail::RigidMotion rigid = detail::motion_from(wall, time);
     detail::Wall now = wall;
     detail::place_at(now, time);
-    const detail::RigidMotion rigid = detail::motion_from(wall, time);
     const detail::RigidContact found =
         now.is_arc ? detail::rigid_ball_arc(shape, motion, now.arc, now.frame, rigid, search)
                    : detail::rigid_ball_segment(shape, motion, now.segment, rigid, search);
@@ -56,7 +70,7 @@ void World::Impl::consider_moving_walls(Event& best, std::uint32_t ball, const B
     } else if (found.checked < search) {
       candidate.time = time + found.checked;
       candidate.partner_version = detail::kMovingWallLook;
-    } else if (moves && ends <= std::min(horizon, sooner)) {
+    } else if (moves && ends <= within) {
       candidate.time = wall.path.until;
       candidate.partner_version = detail::kMovingWallLook;
     } else {
@@ -105,6 +119,7 @@ bool World::Impl::process_moving_wall(const Event& event) {
     a.velocity -= normal * speed_change;
     record_ball_wall(i, w, t, point, normal, approach, speed_change);
     resolved = true;
+    mover_met = true;  // it does work on the balls: a run that never ends is a crush
   }
   ++a.version;
   predict(i);

@@ -255,11 +255,9 @@ void World::Impl::refuse_never_ending(const char* function, const std::string& w
                                       const std::string& otherwise) const {
   if (mover_met) {
     throw InvalidArgument(function, "world", where,
-                          "has balls crushed: a moving immovable ball closes on balls against a "
-                          "wall or another immovable ball, and " +
-                              how +
-                              "; stop the immovable ball first (docs/world.md, \"Known "
-                              "limits\")");
+                          "has balls crushed: a moving immovable ball or a moving wall closes on "
+                          "balls against a wall or an immovable ball, and " +
+                              how + "; stop it first (docs/world.md, \"Known limits\")");
   }
   const bool inelastic = def.collapse_time == 0.0 &&
                          (restitution_of(last.owner) < 1.0 || (last.kind == EventKind::ball_ball &&

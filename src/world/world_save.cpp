@@ -673,6 +673,8 @@ void World::Impl::load_wall_changes(ByteReader& in) {
       in.inconsistent("wall path " + std::to_string(w), number_text(path.start),
                       "finite motion, pivot and shape, starting no later than it ends");
     }
+    path.reach = detail::path_reach(wall);
+    path.speed = length(path.rigid.velocity);
     moving_walls.push_back(w);
     detail::place_at(wall, time);
   }

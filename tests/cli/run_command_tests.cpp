@@ -138,6 +138,31 @@ TEST(RunCommand, EventsIncludeSensorsInOrderAndAPocketSensorRemovesTheBall) {
   EXPECT_NEAR(potted["time"].get<double>(), (16.2 - 2.0) / 4.0, 1e-11);
 }
 
+TEST(RunCommand, AMovingPaddleIsCountedHitsTheBallAndIsSavedWhereItIs) {
+  const ScratchDir dir;
+  const std::string scene = write_scene(dir, "paddle.json", R"({
+    "world": {"boundary": "box", "lower": [-5, -5], "upper": [5, 5]},
+    "balls": [{"position": [0, 2], "radius": 0.5}],
+    "segments": [{"a": [-1, 0], "b": [1, 0], "motion": {"velocity": [0, 1], "duration": 2.5}}]})");
+  const ToolRun info = run_carom({"info", scene});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("moving walls      1"));
+  const std::string events = (dir / "events.jsonl").string();
+  const std::string saved = (dir / "end.json").string();
+  const ToolRun run =
+      run_carom({"run", scene, "--until", "2", "--events", events, "--save", saved, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // The paddle, rising at 1, meets the ball at rest at t = 1.5 and sends it off at 2.
+  const auto hit = nlohmann::json::parse(lines_of(read_file(events)).at(0));
+  EXPECT_EQ(hit["kind"], "ball_wall");
+  EXPECT_DOUBLE_EQ(hit["time"].get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(hit["approach_speed"].get<double>(), 1.0);
+  // Saved at t = 2: the paddle at y = 2, half a time unit of its motion left.
+  const auto end = nlohmann::json::parse(read_file(saved));
+  EXPECT_EQ(end["segments"][0]["a"][1].get<double>(), 2.0);
+  EXPECT_EQ(end["segments"][0]["motion"]["duration"].get<double>(), 0.5);
+}
+
 TEST(RunCommand, SaveThenContinueMatchesOneLongRun) {
   const ScratchDir dir;
   const std::string middle = (dir / "middle.json").string();

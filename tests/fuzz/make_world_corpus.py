@@ -2,7 +2,7 @@
 """Writes the seed corpus of carom_world_fuzz (tests/fuzz/corpus/world/): one file per scenario,
 encoded as world_fuzz.cpp decodes its input (kept in step with it by hand). Each seed is a short
 program worth mutating from: a gas in each boundary, walls of every kind (a point, a zero-span arc,
-a full circle), sensors (lines, arcs, discs, pockets that remove), drags to the nearest free place, inelastic balls with a stop condition, a save and
+a full circle), sensors (lines, arcs, discs, pockets that remove), moving walls, drags to the nearest free place, inelastic balls with a stop condition, a save and
 load, invalid calls, and worlds under gravity. Run it from anywhere; it rewrites its seeds."""
 import pathlib
 import struct
@@ -45,6 +45,24 @@ def point(a):
 def arc(center, radius, start_fraction, kind):
     """kind: 1 zero span, 3 full circle, 5 a span of span_fraction (appended by the caller)."""
     return bytes([kind]) + position(*center) + word((radius - 0.5) / 8.0) + word(start_fraction)
+
+
+def motion(vx, vy, spin, px, py, duration=None):
+    """Fractions of the harness's ranges: velocity and spin about the middle (0.5 is zero), the
+    pivot's offset from the wall's first point; a duration makes the motion end."""
+    return (word(vx) + word(vy) + word(spin) + word(px) + word(py)
+            + (word(duration) if duration is not None else b""))
+
+
+def moving_segment(a, b, *moves):
+    ends = len(moves) > 5
+    return bytes([2 | 64 | (128 if ends else 0)]) + position(*a) + position(*b) + motion(*moves)
+
+
+def moving_arc(center, radius, start_fraction, span_fraction, *moves):
+    ends = len(moves) > 5
+    return (bytes([5 | 64 | (128 if ends else 0)]) + position(*center) + word((radius - 0.5) / 8.0)
+            + word(start_fraction) + word(span_fraction) + motion(*moves))
 
 
 def sensor_segment(a, b, remove=False):
@@ -127,6 +145,17 @@ SEEDS = {
                                                                 sensor_disc((18, 2), 0.5, True),
                                                                 sensor_segment((1, 8), (19, 8)))
     + gas(12, 2) + step(6) + bytes([SAVE]) + step(7) + step(7),
+    # Moving walls: a bar turning for ever and a cup turning and drifting through a gas (saved
+    # mid-motion), a flipper that swings for a while under gravity, and a paddle among growing balls.
+    "moving_walls_box": head(BOX) + walls(moving_segment((5, 10), (15, 10), 0.5, 0.5, 0.8, 0.5, 0.5),
+                                          moving_arc((14, 14), 3.0, 0.1, 0.5, 0.6, 0.4, 0.3, 0.5, 0.5, 0.9))
+    + gas(12, 2) + step(6) + bytes([SAVE]) + step(7) + collisions(8, True),
+    "moving_flipper_gravity": head(BOX, 0, gravity=True)
+    + walls(moving_segment((3, 4), (10, 4), 0.5, 0.5, 0.9, 0.0, 0.5, 0.1), segment((12, 2), (19, 6)))
+    + gas(8, 1) + step(6) + bytes([SAVE]) + step(7) + step(7),
+    "moving_paddle_growth": head(BOX, 0, growth=True)
+    + walls(moving_segment((4, 3), (16, 3), 0.5, 0.7, 0.5, 0.5, 0.5, 0.4))
+    + gas(10, 1) + step(6) + bytes([SAVE]) + step(7),
     "sensors_growth": head(BOX, 0, growth=True) + walls(sensor_disc((10, 10), 3.0), sensor_segment((3, 3), (17, 3)))
     + gas(10, 1) + step(6) + bytes([SAVE]) + step(7),
 }

@@ -3,8 +3,9 @@
 // (refused or to the nearest free place), set velocities, step with random dt,
 // run_until, run_collisions with small counts (with and without a time limit), a stop condition,
 // contact recording on and off, and a save → load round trip; in an open world, a box and a
-// periodic cell, with segments and arcs in the first two, and sensors (segments, arcs and discs,
-// some removing the balls that enter). After every call it checks:
+// periodic cell, with segments and arcs in the first two (some of them moving: translating,
+// turning about a pivot, for a while or for ever), and sensors (segments, arcs and discs, some
+// removing the balls that enter). After every call it checks:
 // - the only exception is carom::InvalidArgument, thrown exactly when an argument the harness
 //   knows to be invalid was passed, or when a placement overlaps (then the world is unchanged);
 // - World::audit finds no overlap and no ball outside the box; every number is finite;
@@ -260,7 +261,7 @@ class Harness {
           if (sensor) {
             world().add_sensor(Segment{a, b}, action);
           } else {
-            world().add_segment({a, b});
+            set_motion(world().add_segment({a, b}), kind, a);
           }
         } else {
           const Vec2 c = position(in_);
@@ -275,13 +276,34 @@ class Harness {
           if (sensor) {
             world().add_sensor(carom::Arc{c, radius, start, start + span}, action);
           } else {
-            world().add_arc({c, radius, start, start + span});
+            set_motion(world().add_arc({c, radius, start, start + span}), kind, c);
           }
         }
       } catch (const carom::InvalidArgument& error) {
         fail("a valid wall was refused:", error.what());
       }
     }
+  }
+
+  // Bit 6 of a solid wall's kind: it moves, turning about a pivot near `near` and translating
+  // (bit 7: for a while rather than for ever), its motion read from the input.
+  void set_motion(carom::WallId wall, std::uint8_t kind, Vec2 near) {
+    if ((kind & 64) == 0) return;
+    carom::WallMotion motion;
+    motion.velocity = {2.0 * (in_.unit() - 0.5), 2.0 * (in_.unit() - 0.5)};
+    motion.angular_velocity = 8.0 * (in_.unit() - 0.5);
+    motion.pivot = near + Vec2{in_.unit() - 0.5, in_.unit() - 0.5};
+    if ((kind & 128) != 0) motion.duration = 3.0 * in_.unit();
+    CAROM_TRACE("set_wall_motion(%u, {%.17g, %.17g}, %.17g, {%.17g, %.17g}, %.17g)\n", wall,
+                motion.velocity.x, motion.velocity.y, motion.angular_velocity, motion.pivot.x,
+                motion.pivot.y, motion.duration);
+    world().set_wall_motion(wall, motion);
+    check(world().wall_motion(wall) ==
+              (motion.moves() ? motion : carom::WallMotion{{}, 0.0, {}, 0.0}),
+          "wall_motion is not the motion set");
+    // A moving wall does work on the balls, and may crush them against another wall.
+    driven_ = true;
+    walls_move_ = true;
   }
 
   BallId some_ball() {
@@ -507,8 +529,9 @@ class Harness {
       const bool growing =
           def_.growth_rate != 0.0 && (what.find("grown too large") != std::string::npos ||
                                       what.find("piling up") != std::string::npos);
+      const bool crushed = walls_move_ && what.find("crushed") != std::string::npos;
       check(what.find("jammed") != std::string::npos || what.find("stalled") != std::string::npos ||
-                growing,
+                growing || crushed,
             "a run threw for a valid call");
       jammed_ = true;
       return;
@@ -952,6 +975,7 @@ class Harness {
   bool over_budget_ = false;  // the world has resolved kMaxContacts contacts: the input ends
   bool elastic_ = true;
   bool driven_ = false;           // an immovable ball has moved: energy is not a conserved quantity
+  bool walls_move_ = false;       // some wall was given a motion
   bool jammed_ = false;           // a run refused jammed balls or a stalled time: the input ends
   bool slowed_ = false;           // set_velocity slowed a ball more than 16 times: the input ends
   bool removed_ = false;          // a sensor removed a ball in the last call

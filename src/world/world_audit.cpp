@@ -64,8 +64,10 @@ Violation World::Impl::audit_ball(std::uint32_t i, Vec2 p, double tolerance) con
 Violation World::Impl::audit_wall(std::uint32_t i, Vec2 p, std::uint32_t k,
                                   double tolerance) const {
   const Impl& w = *this;
-  // A sensor is passed through; so is a wall the ball's filter lets it through.
+  // A sensor is passed through; so is a wall the ball's filter lets it through, and a moving wall
+  // by an immovable ball (neither gives way).
   if (!w.walls[k].solid() || !w.meets_wall(i, k)) return std::nullopt;
+  if (w.walls[k].moving && !w.movable(i)) return std::nullopt;
   const double radius = w.radius_at(i, w.time);
   const double gap = length(detail::nearest_point(w.walls[k], p) - p);
   const double slack = tolerance * radius + position_rounding(p, w.balls[i].velocity, w.time);

@@ -29,7 +29,8 @@ bool World::Impl::rests_on(std::uint32_t ball, std::uint32_t wall) const {
 
 void World::Impl::consider_moving_walls(Event& best, std::uint32_t ball, const Ball& shape,
                                         const Motion& motion, double horizon) const {
-  // An immovable ball and a moving wall pass through each other: neither can give way.
+  // An immovable ball and a moving wall pass through each other, still or not: neither can give
+  // way (and one that passed into it while it moved must not be held there once it stops).
   if (!movable(ball)) return;
   // (Square roots of sums of squares: std::hypot, which length() is, is a slow call here.)
   const double speed = std::sqrt(length_squared(motion.velocity));

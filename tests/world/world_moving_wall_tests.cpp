@@ -239,6 +239,19 @@ TEST(WorldMovingWalls, ARemovedWallIsMetBySomethingNoLonger) {
   EXPECT_THROW(world.set_wall_motion(wall, {{1.0, 0.0}, 0.0, {}}), InvalidArgument);
 }
 
+TEST(WorldMovingWalls, AnImmovableBallAndAMovingWallPassThroughEachOther) {
+  // Neither gives way: the wall sweeps over the post, and the audit does not count the overlap.
+  World world;
+  const WallId wall = world.add_segment({{-1.0, 0.0}, {1.0, 0.0}});
+  BallDef post = ball_def({0.0, 2.0}, {});
+  post.mass = kImmovable;
+  world.add_ball(post);
+  world.set_wall_motion(wall, {{0.0, 1.0}, 0.0, {}, 2.0});
+  world.step(3.0);
+  EXPECT_TRUE(world.contacts().empty());
+  EXPECT_FALSE(world.audit());
+}
+
 TEST(WorldMovingWalls, QueriesSeeAMovingWallWhereItIsNow) {
   World world;
   const WallId wall = world.add_segment({{0.0, -1.0}, {0.0, 1.0}});

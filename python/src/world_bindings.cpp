@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
@@ -438,6 +439,34 @@ void bind_world(py::module_& m) {
                     "How many of the run's contacts (World.contacts) came before it")
       .def("__repr__", &sensor_event_repr);
 
+  py::class_<WallMotion>(m, "WallMotion",
+                         "A wall's rigid motion (World.set_wall_motion): its pivot moves with "
+                         "velocity while the wall turns about it at angular_velocity "
+                         "(counter-clockwise, radians per time unit) for duration, then it "
+                         "stands still")
+      .def(py::init([](Vec2 velocity, double angular_velocity, Vec2 pivot, double duration) {
+             return WallMotion{velocity, angular_velocity, pivot, duration};
+           }),
+           py::kw_only(), py::arg("velocity") = Vec2{}, py::arg("angular_velocity") = 0.0,
+           py::arg("pivot") = Vec2{}, py::arg("duration") = WallMotion{}.duration)
+      .def_readwrite("velocity", &WallMotion::velocity, "The pivot's velocity")
+      .def_readwrite("angular_velocity", &WallMotion::angular_velocity,
+                     "Radians per time unit, counter-clockwise")
+      .def_readwrite("pivot", &WallMotion::pivot, "The point it turns about, where it is now")
+      .def_readwrite("duration", &WallMotion::duration,
+                     "How long it moves from now (math.inf: for ever)")
+      .def("moves", &WallMotion::moves, "Whether the wall moves at all")
+      .def(
+          "__eq__", [](const WallMotion& a, const WallMotion& b) { return a == b; },
+          "Equal in every field")
+      .def("__repr__", [](const WallMotion& motion) {
+        return "carom.WallMotion(velocity=" +
+               py::repr(py::cast(motion.velocity)).cast<std::string>() + ", angular_velocity=" +
+               py::repr(py::float_(motion.angular_velocity)).cast<std::string>() +
+               ", pivot=" + py::repr(py::cast(motion.pivot)).cast<std::string>() +
+               ", duration=" + py::repr(py::float_(motion.duration)).cast<std::string>() + ")";
+      });
+
   py::class_<PyWorld>(m, "World",
                       "A world of moving balls, walls and arcs, advanced in exact event order")
       .def(py::init([](const std::string& boundary, Vec2 lower, Vec2 upper, double restitution,
@@ -565,6 +594,66 @@ void bind_world(py::module_& m) {
       .def_property_readonly(
           "wall_count", [](const PyWorld& w) { return w.world().wall_count(); },
           "The number of walls (segments, arcs and sensors, the boundary's box included)")
+      .def(
+          "wall",
+          [](const PyWorld& w, WallId wall) {
+            py::dict out;
+            const std::variant<Segment, Arc, Ball> shape = w.world().wall(wall);
+            if (const auto* s = std::get_if<Segment>(&shape)) {
+              out["kind"] = "segment";
+              out["a"] = s->a;
+              out["b"] = s->b;
+            } else if (const auto* a = std::get_if<Arc>(&shape)) {
+              out["kind"] = "arc";
+              out["center"] = a->center;
+              out["radius"] = a->radius;
+              out["start_angle"] = a->start_angle;
+              out["end_angle"] = a->end_angle;
+            } else {
+              const auto& disc = std::get<Ball>(shape);
+              out["kind"] = "disc";
+              out["center"] = disc.center;
+              out["radius"] = disc.radius;
+            }
+            return out;
+          },
+          py::arg("wall"),
+          "A wall's shape as a dict: kind \"segment\" (a, b), \"arc\" (center, radius, "
+          "start_angle, end_angle) or \"disc\" (a disc sensor: center, radius); a moving "
+          "wall's where it is now")
+      .def(
+          "set_wall_motion",
+          [](PyWorld& w, WallId wall, const WallMotion& motion) {
+            w.world().set_wall_motion(wall, motion);
+          },
+          py::arg("wall"), py::arg("motion"),
+          "Gives a segment or an arc a rigid motion from now (a WallMotion), replacing the one "
+          "it had: it moves so for motion.duration, then stands still. Balls meet it at exact "
+          "times and bounce with its velocity at the contact point")
+      .def(
+          "set_wall_motion",
+          [](PyWorld& w, WallId wall, Vec2 velocity, double angular_velocity, Vec2 pivot,
+             double duration) {
+            w.world().set_wall_motion(wall, {velocity, angular_velocity, pivot, duration});
+          },
+          py::arg("wall"), py::kw_only(), py::arg("velocity") = Vec2{},
+          py::arg("angular_velocity") = 0.0, py::arg("pivot") = Vec2{},
+          py::arg("duration") = WallMotion{}.duration,
+          "The same with the motion's fields as keywords")
+      .def(
+          "wall_motion", [](const PyWorld& w, WallId wall) { return w.world().wall_motion(wall); },
+          py::arg("wall"),
+          "The motion a wall has from now (its pivot where it is now, the duration left); all "
+          "zeros for a wall that stands still")
+      .def(
+          "remove_wall", [](PyWorld& w, WallId wall) { w.world().remove_wall(wall); },
+          py::arg("wall"),
+          "Removes a wall or a sensor: nothing meets it or sees it from now on; its id stays "
+          "taken")
+      .def(
+          "wall_removed",
+          [](const PyWorld& w, WallId wall) { return w.world().wall_removed(wall); },
+          py::arg("wall"), "Whether the wall was removed")
       // ---- advancing time ----
       .def(
           "step", [](PyWorld& w, double dt) { return w.run([&] { return w.world().step(dt); }); },

@@ -6,6 +6,7 @@
 #include "carom/shapes.hpp"
 #include "carom/sweep.hpp"
 #include "carom/vec2.hpp"
+#include "carom/wall_motion.hpp"
 #include "js_error.hpp"
 
 namespace carom::web {
@@ -31,6 +32,11 @@ EMSCRIPTEN_BINDINGS(carom_core) {
   value_object<Vec2>("Vec2").field("x", &Vec2::x).field("y", &Vec2::y);
   value_object<Ball>("Ball").field("center", &Ball::center).field("radius", &Ball::radius);
   value_object<Segment>("Segment").field("a", &Segment::a).field("b", &Segment::b);
+  value_object<WallMotion>("WallMotion")
+      .field("velocity", &WallMotion::velocity)
+      .field("angular_velocity", &WallMotion::angular_velocity)
+      .field("pivot", &WallMotion::pivot)
+      .field("duration", &WallMotion::duration);
   value_object<Arc>("Arc")
       .field("center", &Arc::center)
       .field("radius", &Arc::radius)

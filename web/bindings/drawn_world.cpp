@@ -39,8 +39,8 @@ int DrawnWorld::add_ball(Vec2 position, Vec2 velocity, double radius, double mas
   return static_cast<int>(ids.size()) - 1;
 }
 
-void DrawnWorld::add_segment(const Segment& segment) {
-  static_cast<void>(scene_world_.world.add_segment(segment));
+int DrawnWorld::add_segment(const Segment& segment) {
+  return static_cast<int>(scene_world_.world.add_segment(segment));
 }
 
 int DrawnWorld::add_sensor(const Segment& segment, bool removes) {

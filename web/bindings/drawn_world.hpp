@@ -34,7 +34,8 @@ class DrawnWorld {
   // ---- building ----
   // Returns the ball's index (0, 1, ... in the order added).
   int add_ball(Vec2 position, Vec2 velocity, double radius, double mass);
-  void add_segment(const Segment& segment);
+  // Its wall id (for set_wall_motion).
+  int add_segment(const Segment& segment);
   // A segment sensor (World::add_sensor): balls pass it, each enter and exit recorded
   // (step_sensor_events); `removes`: the ball that enters is removed (a drain). Its wall id.
   int add_sensor(const Segment& segment, bool removes);

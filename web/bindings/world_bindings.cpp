@@ -4,6 +4,7 @@
 #include <emscripten/val.h>
 
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "carom/science/contact_network.hpp"
@@ -38,8 +39,19 @@ int fill(DrawnWorld& w, const LatticeFilling& filling) {
 int add_ball(DrawnWorld& w, Vec2 position, Vec2 velocity, double radius, double mass) {
   return guarded_call([&] { return w.add_ball(position, velocity, radius, mass); });
 }
-void add_segment(DrawnWorld& w, const Segment& s) {
-  guarded_call([&] { w.add_segment(s); });
+int add_segment(DrawnWorld& w, const Segment& s) {
+  return guarded_call([&] { return w.add_segment(s); });
+}
+// World::set_wall_motion between steps (a pinball flipper): motion.duration may be Infinity.
+void set_wall_motion(DrawnWorld& w, int wall, const WallMotion& motion) {
+  guarded_call([&] { w.world().set_wall_motion(static_cast<WallId>(wall), motion); });
+}
+WallMotion wall_motion(const DrawnWorld& w, int wall) {
+  return guarded_call([&] { return w.world().wall_motion(static_cast<WallId>(wall)); });
+}
+// A segment wall where it is now (a moving one's too).
+Segment wall_segment(const DrawnWorld& w, int wall) {
+  return guarded_call([&] { return std::get<Segment>(w.world().wall(static_cast<WallId>(wall))); });
 }
 int add_sensor(DrawnWorld& w, const Segment& s, bool removes) {
   return guarded_call([&] { return w.add_sensor(s, removes); });
@@ -255,6 +267,9 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("add_ball", &add_ball)
       .function("add_segment", &add_segment)
       .function("add_sensor_segment", &add_sensor)
+      .function("set_wall_motion", &set_wall_motion)
+      .function("wall_motion", &wall_motion)
+      .function("wall_segment", &wall_segment)
       .function("sensor_events", &sensor_events)
       .function("add_arc", &add_arc)
       .function("remove_ball", &remove_ball)

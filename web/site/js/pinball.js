@@ -1,10 +1,13 @@
-// "Pinball": a table under gravity (pinball_table.js) with bumpers, slingshots and two flippers
-// that do not move. The launch button (or the space bar) sends a ball up the plunger's lane;
-// it comes down through the bumpers and leaves by the drain between the flippers. The motion,
-// the bounces and the energies are carom's (carom::web::DrawnWorld over a carom::World with
-// gravity), and so are the drain (a sensor that removes the ball reaching it, at that instant)
-// and the rollovers (sensors that report the balls passing, for the score); this page launches,
-// counts and draws.
+// "Pinball": a table under gravity (pinball_table.js) with bumpers, slingshots and two flippers.
+// The launch button (or the space bar) sends a ball up the plunger's lane; it comes down through
+// the bumpers onto the flippers, which swing up while their key (or button) is held and down when
+// it is let go, and leaves by the drain between them. The motion, the bounces and the energies
+// are carom's (carom::web::DrawnWorld over a carom::World with gravity), and so are the flippers
+// (moving walls: each swing a turn about the pivot for exactly the time to its stop, so a ball is
+// hit at the exact instant with the flipper's own velocity there, and a flipper that stands still
+// carries a ball resting on it), the drain (a sensor that removes the ball reaching it, at that
+// instant) and the rollovers (sensors that report the balls passing, for the score); this page
+// launches, flips, counts and draws.
 import {attempt, carom} from './carom.js';
 import {packColour} from './disc_raster.js';
 import {num} from './format.js';
@@ -18,6 +21,11 @@ const GRAVITY = 40;
 const RESTITUTION = 0.8;  // the ball's, so every bounce (ball with bumper or wall) has it
 const REST_HEIGHT = 1e-3;
 const ENERGY_KEPT = 1200;  // frames of the energy log (for the tests)
+// A flipper turns between its rest and its up angle (FLIPPER_SWING radians apart) at
+// FLIPPER_SPEED radians a second: a swing takes 30 ms, its tip moving at about 90 diameters a
+// second.
+const FLIPPER_SPEED = 28;
+const FLIPPER_SWING = 0.84;
 
 const BALL_COLOUR = packColour('#9e9e9e');
 const RIM_COLOUR = packColour('#424242');
@@ -38,6 +46,8 @@ let launched = 0;
 let drained = 0;
 let score = 0;
 let rolloverIds = [];  // the rollover sensors' wall ids
+let flipperIds = [];   // the flippers' wall ids: left, right
+let flips = 0;         // flipper swings started (a swing does work on the balls it hits)
 const ROLLOVER_POINTS = 100;
 let frames = 0;
 // Per frame: the time, the total energy and the launches and drains so far. Between one launch
@@ -50,7 +60,8 @@ function build() {
     boundary: carom.Boundary.box, lower: table.lower, upper: table.upper,
     restitution: RESTITUTION, collapse_time: 0, cell_size: 0,
     gravity: {x: 0, y: -GRAVITY}, rest_height: REST_HEIGHT});
-  for (const s of [...table.walls, ...table.flippers]) world.add_segment(s);
+  for (const s of table.walls) world.add_segment(s);
+  flipperIds = table.flippers.map((s) => world.add_segment(s));
   attempt(() => world.add_sensor_segment(table.drainLine, true));
   rolloverIds = table.rollovers.map((s) => attempt(() => world.add_sensor_segment(s, false)));
   // Immovable (mass ∞): gravity does not move them, and a ball cannot push them.
@@ -62,8 +73,32 @@ function build() {
   launched = 0;
   drained = 0;
   score = 0;
+  flips = 0;
   energyLog.length = 0;
 }
+
+// ---- the flippers -------------------------------------------------------------------------------
+
+const angleOf = (s) => Math.atan2(s.b.y - s.a.y, s.b.x - s.a.x);
+
+// Swings flipper `side` (0 left, 1 right) up or down from wherever it is: a turn about its pivot
+// (its outer end) towards the up or the rest angle, lasting exactly until it gets there. The
+// left flipper goes up counter-clockwise, the right one clockwise.
+function swing(side, up) {
+  const id = flipperIds[side];
+  const now = world.wall_segment(id);
+  const sign = side === 0 ? 1 : -1;
+  let turned = sign * (angleOf(now) - angleOf(table.flippers[side]));
+  turned -= 2 * Math.PI * Math.round(turned / (2 * Math.PI));
+  const left = (up ? FLIPPER_SWING : 0) - turned;
+  if (Math.abs(left) < 1e-9) return;
+  attempt(() => world.set_wall_motion(id, {
+    velocity: {x: 0, y: 0}, angular_velocity: sign * Math.sign(left) * FLIPPER_SPEED,
+    pivot: now.a, duration: Math.abs(left) / FLIPPER_SPEED}));
+  ++flips;
+}
+
+const flipperMoves = () => flipperIds.some((id) => world.wall_motion(id).duration > 0);
 
 // A ball resting at the lane's foot is launched; otherwise a new ball is put there and launched,
 // unless another ball is in the way.
@@ -127,7 +162,7 @@ function draw() {
   painter.label('drain', {x: LANE_X / 2, y: DRAIN_Y / 2}, '#fafafa');
   painter.segments(table.walls, '#333', 2);
   painter.segments(table.rollovers, '#2ca02c', 3);
-  painter.segments(table.flippers, '#d62728', 6);
+  painter.segments(flipperIds.map((id) => world.wall_segment(id)), '#d62728', 6);
   painter.frame();
   return balls;
 }
@@ -153,11 +188,13 @@ function report() {
 // ---- running ----------------------------------------------------------------------------------
 
 function frame() {
+  // A flipper swinging during the step does work on the balls it hits.
+  const swinging = flipperMoves();
   attempt(() => world.step(FRAME_TIME));
   count(world.sensor_events());
   draw();
   energyLog.push({time: world.time(), total: world.kinetic_energy() + world.potential_energy(),
-                  launched, drained});
+                  launched, drained, flips, swinging});
   if (energyLog.length > ENERGY_KEPT) energyLog.shift();
   if (++frames % 6 === 0) report();
   requestAnimationFrame(frame);
@@ -170,12 +207,33 @@ document.getElementById('reset').addEventListener('click', () => {
   report();
 });
 // The space bar launches, except on a button or a control, where it already means something.
+// The left flipper's keys are ArrowLeft and z, the right one's ArrowRight and /: held, it stays up.
+const FLIPPER_KEYS = {ArrowLeft: 0, z: 0, Z: 0, ArrowRight: 1, '/': 1};
 document.addEventListener('keydown', (event) => {
-  if (event.key !== ' ' || event.repeat) return;
+  if (event.repeat) return;
+  if (event.key in FLIPPER_KEYS) {
+    event.preventDefault();
+    swing(FLIPPER_KEYS[event.key], true);
+    return;
+  }
+  if (event.key !== ' ') return;
   if (event.target instanceof HTMLButtonElement || event.target instanceof HTMLInputElement) return;
   event.preventDefault();
   launch();
 });
+document.addEventListener('keyup', (event) => {
+  if (!(event.key in FLIPPER_KEYS)) return;
+  event.preventDefault();
+  swing(FLIPPER_KEYS[event.key], false);
+});
+// The on-screen flipper buttons, for touch: held down, the flipper stays up.
+for (const [button, side] of [['flip-left', 0], ['flip-right', 1]]) {
+  const element = document.getElementById(button);
+  element.addEventListener('pointerdown', () => swing(side, true));
+  for (const type of ['pointerup', 'pointerleave', 'pointercancel']) {
+    element.addEventListener(type, () => swing(side, false));
+  }
+}
 window.addEventListener('resize', () => draw());
 
 // For the tests (web/tests/pinball.test.mjs).
@@ -187,6 +245,13 @@ window.caromPinball = {
   get drained() { return drained; },
   get score() { return score; },
   get energyLog() { return [...energyLog]; },
+  get flipperIds() { return [...flipperIds]; },
+  // A ball put in play at p, at rest (for the flipper test).
+  dropBall(p) {
+    const index = attempt(() => world.add_ball(p, {x: 0, y: 0}, BALL_RADIUS, 1));
+    if (index !== undefined) inPlay.push(index);
+    return index;
+  },
 };
 
 build();

@@ -210,11 +210,13 @@ struct SceneWorld {
   Scene scene;  // the scene it was built from, generators expanded into balls
   // balls[i] is scene.balls[i] (null once removed by a pocket or a sensor)
   std::vector<BallId> balls;
-  std::vector<BallId> pockets;                      // pockets[k] is scene.pockets[k]
-  std::unordered_map<std::string, BallId> by_name;  // named balls and pockets
+  // pockets[k] is scene.pockets[k]: the wall id of a disc sensor that removes the ball entering
+  // it (SensorAction::remove_ball), after the scene's sensors the world's last walls.
+  std::vector<WallId> pockets;
+  std::unordered_map<std::string, BallId> by_name;  // named balls
   double start_time = 0.0;                          // scene time when the world's clock read 0
   double thermostat_work = 0.0;  // Σ of the thermostat's changes of kinetic energy so far
-  // sensors[k] is scene.sensors[k]: the world's last scene.sensors.size() walls.
+  // sensors[k] is scene.sensors[k]: the world's walls after the scene's own, before the pockets.
   std::vector<WallId> sensors{};
   // The sensors' enters and exits during the last step_scene / run_scene_until /
   // run_scene_collisions, in order (world times; contacts_before is the event's place in the
@@ -223,19 +225,13 @@ struct SceneWorld {
 
   // The scene's clock now: start_time + world.time().
   [[nodiscard]] double time() const noexcept { return start_time + world.time(); }
-  // The scene index of a ball id, or nothing (a pocket, or not from this scene).
+  // The scene index of a ball id, or nothing (not from this scene).
   [[nodiscard]] std::optional<std::size_t> index_of(BallId id) const;
 };
 
 // Builds the world (walls in order: segments, then polylines' segments, then arcs, then sensors,
-// so wall ids follow the scene). Throws SceneError for a scene the world refuses.
+// then pockets, so wall ids follow the scene). Throws SceneError for a scene the world refuses.
 [[nodiscard]] SceneWorld make_world(const Scene& scene);
-
-// The stop condition make_world gives a world with pockets: a run ends right after each contact
-// between a pocket and a ball, so that step_scene can remove the ball (without it a pocket is an
-// immovable ball that others bounce off). World::save leaves stop conditions out (they are
-// functions), so a world loaded from a checkpoint needs this again.
-void stop_at_pocket_contacts(World& world, std::vector<BallId> pockets);
 
 // A ball that fell into a pocket.
 struct PottedBall {
@@ -245,11 +241,13 @@ struct PottedBall {
 };
 
 // Like World::step / run_until / run_collisions, with pockets: a ball that touches a pocket is
-// removed at that instant and the run goes on. Each call appends every contact (pocket contacts
-// included) to contacts and every potting to potted when they are given. Contact times in
-// `contacts` are world times (add start_time for scene time), and so are run_scene_until's `time`
-// and run_scene_collisions' `time_limit`. Afterwards world.stop_reason() says why the call
-// returned (none, no_more_contacts, time_limit or interrupted; pockets' contacts never end it).
+// removed at that instant (the pocket's sensor removes it; touching a pocket is no contact) and
+// the run goes on. Each call appends every contact to contacts and every potting to potted when
+// they are given, and the sensors' enters and exits (the pockets' included) to sensor_events.
+// Contact times in `contacts` are world times (add start_time for scene time), and so are
+// run_scene_until's `time` and run_scene_collisions' `time_limit`. Afterwards
+// world.stop_reason() says why the call returned (none, no_more_contacts, time_limit or
+// interrupted).
 // With a thermostat the runs stop at each of its steps (a multiple of its interval on the scene
 // clock, or of its collisions on the world's count, after the call's start), scale the
 // velocities, and go on; a step at the call's very end is taken before it returns.

@@ -1,4 +1,5 @@
-// Building a world from a scene, running it with pockets, and reading its state back.
+// Building a world from a scene, running it (its pockets remove the balls falling in), and
+// reading its state back.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,51 +14,28 @@
 namespace carom {
 namespace {
 
-// user_data of a pocket's ball: this bit set, the pocket's index below it. A ball's user_data is
-// its scene index.
-constexpr std::uint64_t kPocketTag = std::uint64_t{1} << 63U;
-
 SceneError world_refused(const std::string& path, const InvalidArgument& error) {
   return SceneError(
       {"", 0, 0, path, error.value(), "the world refuses it: " + error.requirement(), ""});
 }
 
-bool is_pocket(const std::vector<BallId>& pockets, BallId id) {
-  return std::find(pockets.begin(), pockets.end(), id) != pockets.end();
-}
-
-// The world stopped right after a contact with a pocket: remove the ball that fell in.
-void pot(SceneWorld& sw, std::vector<PottedBall>* potted) {
-  const std::span<const ContactEvent> contacts = sw.world.contacts();
-  if (contacts.empty()) return;
-  const ContactEvent& last = contacts.back();
-  if (last.kind != ContactKind::ball_ball) return;
-  const bool a_is_pocket = is_pocket(sw.pockets, last.a);
-  const BallId ball = a_is_pocket ? last.b : last.a;
-  const BallId pocket = a_is_pocket ? last.a : last.b;
-  if (!is_pocket(sw.pockets, pocket) || is_pocket(sw.pockets, ball)) return;
-  if (!sw.world.contains(ball)) return;
-  const std::uint64_t index = sw.world.user_data(ball);
-  sw.world.remove_ball(ball);
-  if (index < sw.balls.size()) sw.balls[static_cast<std::size_t>(index)] = BallId{};
-  if (potted != nullptr) {
-    const auto k = static_cast<std::size_t>(
-        std::find(sw.pockets.begin(), sw.pockets.end(), pocket) - sw.pockets.begin());
-    potted->push_back({sw.start_time + last.time, static_cast<std::size_t>(index), k});
-  }
-}
-
 // A world run's contacts onto `contacts`, and its sensor events onto the scene world's, each
-// placed among the call's contacts so far.
-void append(SceneWorld& sw, std::vector<ContactEvent>* contacts) {
+// placed among the call's contacts so far; a pocket's removals onto `potted`.
+void append(SceneWorld& sw, std::vector<ContactEvent>* contacts, std::vector<PottedBall>* potted) {
   const std::size_t before = contacts != nullptr ? contacts->size() : 0;
   for (SensorEvent event : sw.world.sensor_events()) {
     event.contacts_before += before;
     sw.sensor_events.push_back(event);
     if (event.removed) {
-      // Gone, as a potted ball is: its scene entry reads null.
+      // Gone: its scene entry reads null.
       const auto gone = std::find(sw.balls.begin(), sw.balls.end(), event.ball);
+      const auto ball = static_cast<std::size_t>(gone - sw.balls.begin());
       if (gone != sw.balls.end()) *gone = BallId{};
+      const auto pocket = std::find(sw.pockets.begin(), sw.pockets.end(), event.sensor);
+      if (potted != nullptr && pocket != sw.pockets.end() && gone != sw.balls.end()) {
+        potted->push_back({sw.start_time + event.time, ball,
+                           static_cast<std::size_t>(pocket - sw.pockets.begin())});
+      }
     }
   }
   if (contacts == nullptr) return;
@@ -69,9 +47,7 @@ void append(SceneWorld& sw, std::vector<ContactEvent>* contacts) {
 
 std::optional<std::size_t> SceneWorld::index_of(BallId id) const {
   if (!world.contains(id)) return std::nullopt;
-  const std::uint64_t data = world.user_data(id);
-  if ((data & kPocketTag) != 0) return std::nullopt;
-  return static_cast<std::size_t>(data);
+  return static_cast<std::size_t>(world.user_data(id));
 }
 
 SceneWorld make_world(const Scene& scene) {
@@ -152,8 +128,18 @@ SceneWorld make_world(const Scene& scene) {
       throw world_refused("sensors[" + std::to_string(k) + "]", error);
     }
   }
+  // Pockets: disc sensors that remove the ball entering them, the world's last walls.
+  for (std::size_t k = 0; k < scene.pockets.size(); ++k) {
+    const ScenePocket& p = scene.pockets[k];
+    try {
+      sw.pockets.push_back(
+          sw.world.add_sensor(Ball{p.position, p.radius}, SensorAction::remove_ball));
+    } catch (const InvalidArgument& error) {
+      throw world_refused("pockets[" + std::to_string(k) + "]", error);
+    }
+  }
   sw.balls.reserve(balls.size());
-  sw.world.reserve(balls.size() + scene.pockets.size());
+  sw.world.reserve(balls.size());
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const SceneBall& b = balls[i];
     try {
@@ -166,53 +152,23 @@ SceneWorld make_world(const Scene& scene) {
       throw world_refused("balls[" + std::to_string(i) + "]", error);
     }
   }
-  for (std::size_t k = 0; k < scene.pockets.size(); ++k) {
-    const ScenePocket& p = scene.pockets[k];
-    try {
-      const BallId id =
-          sw.world.add_ball({p.position, {}, p.radius, kImmovable, std::nullopt, kPocketTag | k});
-      sw.pockets.push_back(id);
-      if (p.name) sw.by_name[*p.name] = id;
-    } catch (const InvalidArgument& error) {
-      throw world_refused("pockets[" + std::to_string(k) + "]", error);
-    }
-  }
-  if (!sw.pockets.empty()) stop_at_pocket_contacts(sw.world, sw.pockets);
   return sw;
-}
-
-void stop_at_pocket_contacts(World& world, std::vector<BallId> pockets) {
-  world.set_stop_condition([pockets = std::move(pockets)](const ContactEvent& contact) {
-    return contact.kind == ContactKind::ball_ball &&
-           (is_pocket(pockets, contact.a) || is_pocket(pockets, contact.b));
-  });
 }
 
 namespace {
 
-// The runs with pockets alone: a pocket's contact ends the world's run, the ball goes, the run
-// goes on.
+// A world run, its contacts, sensor events and pottings collected.
 void advance_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
                    std::vector<PottedBall>* potted) {
-  for (;;) {
-    static_cast<void>(sw.world.run_until(time));
-    append(sw, contacts);
-    if (!sw.world.stopped_early()) break;
-    pot(sw, potted);
-    if (sw.world.time() >= time) break;
-  }
+  static_cast<void>(sw.world.run_until(time));
+  append(sw, contacts, potted);
 }
 
 std::uint64_t advance_collisions(SceneWorld& sw, std::uint64_t count,
                                  std::vector<ContactEvent>* contacts,
                                  std::vector<PottedBall>* potted, double time_limit) {
-  std::uint64_t done = 0;
-  while (done < count) {
-    done += sw.world.run_collisions(count - done, time_limit);
-    append(sw, contacts);
-    if (!sw.world.stopped_early()) break;
-    pot(sw, potted);
-  }
+  const std::uint64_t done = sw.world.run_collisions(count, time_limit);
+  append(sw, contacts, potted);
   return done;
 }
 
@@ -274,9 +230,9 @@ double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts
                   std::vector<PottedBall>* potted) {
   sw.sensor_events.clear();
   const double start = sw.world.time();
-  if (sw.pockets.empty() && !sw.scene.thermostat) {
+  if (!sw.scene.thermostat) {
     const double advanced = sw.world.step(dt);
-    append(sw, contacts);
+    append(sw, contacts, potted);
     return advanced;
   }
   return run_scene_until(sw, start + dt, contacts, potted);

@@ -89,11 +89,12 @@ WallId DrawnWorld::first_own_wall() const {
 }
 
 double DrawnWorld::step(double dt) {
-  // step_scene runs a world with pockets or a thermostat piece by piece (each piece a World run
-  // of its own); for any other it is one World::step, whose contacts the World keeps.
-  step_in_pieces_ = !scene_world_.pockets.empty() || scene_world_.scene.thermostat.has_value();
+  // step_scene runs a world with a thermostat piece by piece (each piece a World run of its
+  // own); for any other it is one World::step, whose contacts the World keeps.
+  step_in_pieces_ = scene_world_.scene.thermostat.has_value();
   step_contacts_.clear();
-  if (step_in_pieces_ || has_sensors_ || !scene_world_.sensors.empty()) {
+  if (step_in_pieces_ || has_sensors_ || !scene_world_.sensors.empty() ||
+      !scene_world_.pockets.empty()) {
     step_balls_ = scene_world_.balls;
   } else {
     step_balls_.clear();
@@ -212,9 +213,9 @@ int DrawnWorld::index_of(BallId ball) const {
   return found == ids.end() ? -1 : static_cast<int>(found - ids.begin());
 }
 
-int DrawnWorld::pocket_of(BallId ball) const {
-  const std::vector<BallId>& pockets = scene_world_.pockets;
-  const auto found = std::find(pockets.begin(), pockets.end(), ball);
+int DrawnWorld::pocket_of(WallId wall) const {
+  const std::vector<WallId>& pockets = scene_world_.pockets;
+  const auto found = std::find(pockets.begin(), pockets.end(), wall);
   return found == pockets.end() ? -1 : static_cast<int>(found - pockets.begin());
 }
 

@@ -104,8 +104,8 @@ class DrawnWorld {
   // (so that step_contacts and step_sensor_events can name it); -1 for a pocket or a ball this
   // DrawnWorld does not list.
   [[nodiscard]] int index_of(BallId ball) const;
-  // The index of a pocket (in pockets()), or -1 for any other ball.
-  [[nodiscard]] int pocket_of(BallId ball) const;
+  // The index of a pocket (in pockets()) whose sensor is wall `wall`, or -1 for any other wall.
+  [[nodiscard]] int pocket_of(WallId wall) const;
 
  private:
   [[nodiscard]] BallId id(int index) const;

@@ -1,9 +1,10 @@
 #include "world_queries.hpp"
 
-#include <functional>
+#include <span>
 #include <string>
-#include <utility>
+#include <vector>
 
+#include "carom/sweep.hpp"
 #include "carom/world.hpp"
 #include "js_error.hpp"
 
@@ -24,16 +25,11 @@ QueryFilter query_filter(const DrawnWorld& w, const val& filter) {
   if (filter.isUndefined() || filter.isNull()) return out;
   out.balls = flag(filter, "balls");
   out.walls = flag(filter, "walls");
-  const bool pockets = flag(filter, "pockets");
   const val ignore = filter["ignore"];
   if (ignore.isNumber() && ignore.as<int>() >= 0) out.ignore = w.handle(ignore.as<int>());
   const val accept = filter["accept"];
-  const bool has_accept = accept.typeOf().as<std::string>() == "function";
-  if (!pockets || has_accept) {
-    out.accept = [&w, accept, pockets, has_accept](BallId ball) {
-      if (w.pocket_of(ball) >= 0) return pockets;
-      return !has_accept || accept(w.index_of(ball)).as<bool>();
-    };
+  if (accept.typeOf().as<std::string>() == "function") {
+    out.accept = [&w, accept](BallId ball) { return accept(w.index_of(ball)).as<bool>(); };
   }
   return out;
 }
@@ -45,20 +41,17 @@ val point(Vec2 p) {
   return out;
 }
 
-val hit_object(const DrawnWorld& w, const QueryHit& hit) {
+// A hit, or the pocket `pocket` (>= 0) the moving ball reaches first.
+val hit_object(const DrawnWorld& w, const QueryHit& hit, int pocket = -1) {
   val out = val::object();
   int ball = -1;
-  int pocket = -1;
   int wall = -1;
   std::string kind = "none";
-  if (hit.kind == HitKind::ball) {
-    pocket = w.pocket_of(hit.ball);
-    if (pocket >= 0) {
-      kind = "pocket";
-    } else {
-      kind = "ball";
-      ball = w.index_of(hit.ball);
-    }
+  if (pocket >= 0) {
+    kind = "pocket";
+  } else if (hit.kind == HitKind::ball) {
+    kind = "ball";
+    ball = w.index_of(hit.ball);
   } else if (hit.kind == HitKind::wall) {
     kind = "wall";
     wall = static_cast<int>(hit.wall);
@@ -81,19 +74,31 @@ val hit_object(const DrawnWorld& w, const QueryHit& hit) {
 val cast_ball(const DrawnWorld& w, Vec2 center, double radius, Vec2 translation,
               const val& filter) {
   return guarded_call([&] {
-    const QueryHit hit = w.world().cast_ball(center, radius, translation, query_filter(w, filter));
-    return hit_object(w, hit);
+    QueryHit hit = w.world().cast_ball(center, radius, translation, query_filter(w, filter));
+    // Pockets are sensors, which the world's queries do not see: the page asks them itself
+    // (unless its filter says "pockets: false"), as the moving ball's first touch of each disc.
+    int pocket = -1;
+    const bool pockets = filter.isUndefined() || filter.isNull() || flag(filter, "pockets");
+    const std::vector<ScenePocket>& discs = w.pockets();
+    for (std::size_t k = 0; pockets && k < discs.size(); ++k) {
+      const Impact touch =
+          sweep_ball_ball({center, radius}, translation, {discs[k].position, discs[k].radius});
+      if (!touch.hit || touch.overlapping || (hit && hit.fraction <= touch.t)) continue;
+      hit = QueryHit{};
+      hit.kind = HitKind::ball;  // (a stand-in: hit_object names the pocket)
+      hit.fraction = touch.t;
+      hit.normal = -touch.normal;
+      hit.point = touch.point;
+      hit.center = touch.a_at;
+      pocket = static_cast<int>(k);
+    }
+    return hit_object(w, hit, pocket);
   });
 }
 
 val balls_in_circle(const DrawnWorld& w, Vec2 center, double radius, const val& filter) {
   return guarded_call([&] {
-    QueryFilter query = query_filter(w, filter);
-    // Pockets are the World's balls but not the page's: never listed here.
-    std::function<bool(BallId)> accept = std::move(query.accept);
-    query.accept = [&w, &accept](BallId ball) {
-      return w.pocket_of(ball) < 0 && (!accept || accept(ball));
-    };
+    const QueryFilter query = query_filter(w, filter);
     val out = val::array();
     for (const BallId ball : w.world().balls_in_circle(center, radius, query)) {
       out.call<void>("push", w.index_of(ball));
@@ -104,23 +109,42 @@ val balls_in_circle(const DrawnWorld& w, Vec2 center, double radius, const val& 
 
 val step_contacts(const DrawnWorld& w) {
   val out = val::array();
-  for (const ContactEvent& c : w.step_contacts()) {
+  const std::span<const ContactEvent> contacts = w.step_contacts();
+  const std::span<const SensorEvent> sensed = w.step_sensor_events();
+  std::size_t next = 0;
+  // A pocket's sensor taking a ball, in its place among the contacts: as a contact of kind
+  // "pocket" at the pocket's centre.
+  const auto pockets_before = [&](std::size_t before) {
+    for (; next < sensed.size() && sensed[next].contacts_before <= before; ++next) {
+      const SensorEvent& e = sensed[next];
+      const int pocket = w.pocket_of(e.sensor);
+      if (pocket < 0 || !e.removed) continue;
+      val contact = val::object();
+      contact.set("time", e.time);
+      contact.set("kind", std::string("pocket"));
+      contact.set("a", w.index_of(e.ball));
+      contact.set("b", -1);
+      contact.set("pocket", pocket);
+      contact.set("wall", -1);
+      contact.set("point", point(w.pockets()[static_cast<std::size_t>(pocket)].position));
+      contact.set("normal", point({}));
+      contact.set("approach_speed", 0.0);
+      contact.set("impulse", 0.0);
+      out.call<void>("push", contact);
+    }
+  };
+  for (std::size_t n = 0; n < contacts.size(); ++n) {
+    pockets_before(n);
+    const ContactEvent& c = contacts[n];
     val contact = val::object();
-    int a = w.index_of(c.a);
+    const int a = w.index_of(c.a);
     int b = -1;
-    int pocket = -1;
     int wall = -1;
+    const int pocket = -1;
     std::string kind;
     if (c.kind == ContactKind::ball_wall) {
       kind = "wall";
       wall = static_cast<int>(c.wall);
-    } else if (const int pa = w.pocket_of(c.a); pa >= 0) {
-      kind = "pocket";
-      pocket = pa;
-      a = w.index_of(c.b);
-    } else if (const int pb = w.pocket_of(c.b); pb >= 0) {
-      kind = "pocket";
-      pocket = pb;
     } else {
       kind = "ball";
       b = w.index_of(c.b);
@@ -137,6 +161,7 @@ val step_contacts(const DrawnWorld& w) {
     contact.set("impulse", c.impulse);
     out.call<void>("push", contact);
   }
+  pockets_before(contacts.size());
   return out;
 }
 

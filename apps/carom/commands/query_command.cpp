@@ -33,7 +33,7 @@ struct QueryOptions {
   bool json = false;
 };
 
-// A ball or pocket of the scene by name or index ("cue", "3", "pocket 2" is by name only).
+// A ball of the scene by name or index ("cue", "3").
 BallId named_ball(const SceneWorld& sw, const std::string& text) {
   if (const auto it = sw.by_name.find(text); it != sw.by_name.end()) return it->second;
   const std::uint64_t index =
@@ -45,27 +45,19 @@ BallId named_ball(const SceneWorld& sw, const std::string& text) {
   return sw.balls[index];
 }
 
-// The scene index of a pocket's ball.
-std::size_t pocket_of(const SceneWorld& sw, BallId id) {
-  std::size_t pocket = 0;
-  while (pocket < sw.pockets.size() && sw.pockets[pocket] != id) ++pocket;
-  return pocket;
-}
-
-// What a hit names, in the scene's terms: a ball by index (and name), a pocket, a wall.
+// What a hit names, in the scene's terms: a ball by index (and name), a wall. (Pockets are
+// sensors, which queries do not see.)
 nlohmann::ordered_json hit_json(const SceneWorld& sw, const QueryHit& hit) {
   nlohmann::ordered_json out;
   if (hit.kind == HitKind::wall) {
     out["kind"] = "wall";
     out["wall"] = hit.wall;
-  } else if (const std::optional<std::size_t> index = sw.index_of(hit.ball)) {
-    out["kind"] = "ball";
-    out["ball"] = *index;
-    out["name"] = sw.scene.balls[*index].name ? nlohmann::ordered_json(*sw.scene.balls[*index].name)
-                                              : nullptr;
   } else {
-    out["kind"] = "pocket";
-    out["pocket"] = pocket_of(sw, hit.ball);
+    const std::size_t index = sw.index_of(hit.ball).value_or(0);
+    out["kind"] = "ball";
+    out["ball"] = index;
+    out["name"] =
+        sw.scene.balls[index].name ? nlohmann::ordered_json(*sw.scene.balls[index].name) : nullptr;
   }
   out["fraction"] = hit.fraction;
   out["point"] = {hit.point.x, hit.point.y};
@@ -78,20 +70,15 @@ nlohmann::ordered_json hit_json(const SceneWorld& sw, const QueryHit& hit) {
 nlohmann::ordered_json ids_json(const SceneWorld& sw, const std::vector<BallId>& ids) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const BallId id : ids) {
-    if (const std::optional<std::size_t> index = sw.index_of(id)) {
-      out.push_back(*index);
-    } else {
-      out.push_back("pocket " + std::to_string(pocket_of(sw, id)));
-    }
+    if (const std::optional<std::size_t> index = sw.index_of(id)) out.push_back(*index);
   }
   return out;
 }
 
 std::string hit_text(const nlohmann::ordered_json& hit) {
   std::string what = hit["kind"].get<std::string>() + " ";
-  what += hit["kind"] == "wall"   ? std::to_string(hit["wall"].get<std::uint32_t>())
-          : hit["kind"] == "ball" ? std::to_string(hit["ball"].get<std::size_t>())
-                                  : std::to_string(hit["pocket"].get<std::size_t>());
+  what += hit["kind"] == "wall" ? std::to_string(hit["wall"].get<std::uint32_t>())
+                                : std::to_string(hit["ball"].get<std::size_t>());
   if (hit.contains("name") && hit["name"].is_string())
     what += " \"" + hit["name"].get<std::string>() + "\"";
   return what + " at fraction " + readable(hit["fraction"].get<double>()) + ", point (" +

@@ -347,7 +347,7 @@ class Runner {
     if (StopOnSignals::requested()) stopped_ = StopReason::interrupted;
     outcome.interrupted = stopped_ == StopReason::interrupted;
     outcome.stopped = stopped_;
-    outcome.collisions = state_.ball_ball + state_.ball_wall + state_.potted;
+    outcome.collisions = state_.ball_ball + state_.ball_wall;
     outcome.ball_ball = state_.ball_ball;
     outcome.ball_wall = state_.ball_wall;
     outcome.potted = state_.potted;
@@ -397,7 +397,7 @@ class Runner {
   void on_progress(const RunStatus& status) {
     const double seconds = seconds_since(clock_start_);
     const std::uint64_t done =
-        state_.ball_ball + state_.ball_wall + state_.potted + status.contacts - counted_before_;
+        state_.ball_ball + state_.ball_wall + status.contacts - counted_before_;
     const std::uint64_t crossings = status.events - status.contacts;
     progress_.update(fraction_done(status),
                      readable(seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0) +
@@ -409,22 +409,19 @@ class Runner {
 
   void after_chunk(double fraction) {
     for (const ContactEvent& c : contacts_) {
-      const bool pocket = c.kind == ContactKind::ball_ball &&
-                          (directory_.pocket_index(c.a) || directory_.pocket_index(c.b));
-      if (pocket) {
-        ++state_.potted;
-      } else if (c.kind == ContactKind::ball_ball) {
-        ++state_.ball_ball;
-      } else {
-        ++state_.ball_wall;
-      }
+      ++(c.kind == ContactKind::ball_ball ? state_.ball_ball : state_.ball_wall);
+    }
+    // A potting is a pocket's sensor removing the ball (no contact).
+    for (const SensorEvent& e : built_.sensor_events) {
+      const bool pocket =
+          std::find(built_.pockets.begin(), built_.pockets.end(), e.sensor) != built_.pockets.end();
+      if (pocket && e.removed) ++state_.potted;
     }
     if (events_) events_->write(contacts_, directory_, built_, wall_offset_);
     contacts_.clear();
     dirty_ = true;
     const double seconds = seconds_since(clock_start_);
-    const std::uint64_t done =
-        state_.ball_ball + state_.ball_wall + state_.potted - counted_before_;
+    const std::uint64_t done = state_.ball_ball + state_.ball_wall - counted_before_;
     progress_.update(fraction, readable(seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0) +
                                    " collisions/s  t=" + readable(built_.time()));
   }
@@ -553,7 +550,7 @@ class Runner {
   RunProgress state_;
   bool resumed_;
   // Contacts counted before this process started (for the progress bar's rate).
-  std::uint64_t counted_before_ = state_.ball_ball + state_.ball_wall + state_.potted;
+  std::uint64_t counted_before_ = state_.ball_ball + state_.ball_wall;
   bool dirty_ = false;  // chunks run since the last checkpoint
   StopReason stopped_ = StopReason::none;
   std::optional<std::string> checkpoint_problem_;
@@ -700,9 +697,10 @@ Command add_run_command(CLI::App& app) {
       "                  (extended XYZ, opens in OVITO and ASE); --format csv|xyz for a\n"
       "                  name without either (-, /dev/stdout, a FIFO). Without --every: 100\n"
       "                  frames for --until, one per step for --steps.\n"
-      "  --events FILE   every contact as a JSON line: time, kind (ball_ball, ball_wall,\n"
-      "                  potted), scene ball indices, wall, point, normal, approach_speed,\n"
-      "                  impulse.\n"
+      "  --events FILE   every contact as a JSON line: time, kind (ball_ball, ball_wall),\n"
+      "                  scene ball indices, wall, point, normal, approach_speed, impulse;\n"
+      "                  and in their places the pottings (potted: ball, pocket) and the\n"
+      "                  sensors' enters and exits.\n"
       "  --save FILE     the end state as a scene file to continue from.\n"
       "  --checkpoint FILE  at the end (and on a stop) and, with --checkpoint-every T,\n"
       "                  each time T of scene time has passed: the world and the run's\n"

@@ -131,11 +131,9 @@ TimePlotSpec rate_plot(const Scene& scene, const Run& run, double until) {
   for (const ContactEvent& c : run.contacts) {
     (c.kind == ContactKind::ball_ball ? ball_ball : ball_wall)[bin(c.time)] += 1.0;
   }
-  // A potting is a contact with a pocket (an immovable ball): moved from ball–ball to its own.
+  // A potting is no contact (a pocket's sensor removes the ball): a series of its own.
   for (const PottedBall& p : run.potted) {
-    const std::size_t b = bin(p.time - run.start_time);
-    ball_ball[b] -= 1.0;
-    potted[b] += 1.0;
+    potted[bin(p.time - run.start_time)] += 1.0;
     ++pocket_contacts;
   }
   const auto series = [&](std::string name, std::string colour, const std::vector<double>& n) {

@@ -21,9 +21,11 @@ namespace {
 
 constexpr std::string_view kMagic = "CAROMCKP";
 // Version 2 added the time limit and the step in progress, version 3 the potential energy at the
-// start; older files read as having none of what came after them.
-constexpr std::uint32_t kVersion = 3;
-constexpr std::uint32_t kOldestVersion = 1;
+// start; older files read as having none of what came after them. Version 4 names the pockets by
+// their sensors' wall ids (they were immovable balls): older files, whose worlds hold pocket
+// balls, cannot be continued.
+constexpr std::uint32_t kVersion = 4;
+constexpr std::uint32_t kOldestVersion = 4;
 // magic, version, content size, checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8;
 
@@ -193,7 +195,7 @@ std::string encode_checkpoint(const SceneWorld& built, const RunProgress& progre
   content.put<std::uint64_t>(built.balls.size());
   for (const BallId id : built.balls) content.put_id(id);
   content.put<std::uint64_t>(built.pockets.size());
-  for (const BallId id : built.pockets) content.put_id(id);
+  for (const WallId wall : built.pockets) content.put<std::uint32_t>(wall);
   // by_name in name order, so the same state always gives the same bytes.
   std::vector<std::pair<std::string, BallId>> names(built.by_name.begin(), built.by_name.end());
   std::sort(names.begin(), names.end(),
@@ -262,11 +264,13 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
     damaged(file, "inconsistent content: " + std::to_string(balls.size()) + " ball ids for " +
                       std::to_string(scene.balls.size()) + " scene balls");
   }
-  std::vector<BallId> pockets = read_ids("the pocket ids");
-  if (pockets.size() != scene.pockets.size()) {
-    damaged(file, "inconsistent content: " + std::to_string(pockets.size()) + " pocket ids for " +
+  const auto pocket_count = r.get<std::uint64_t>("the pocket count");
+  if (pocket_count != scene.pockets.size()) {
+    damaged(file, "inconsistent content: " + std::to_string(pocket_count) + " pocket ids for " +
                       std::to_string(scene.pockets.size()) + " scene pockets");
   }
+  std::vector<WallId> pockets(scene.pockets.size());
+  for (WallId& wall : pockets) wall = r.get<std::uint32_t>("a pocket's wall id");
   std::unordered_map<std::string, BallId> by_name;
   const auto names = r.get<std::uint64_t>("the names");
   if (names > r.left()) r.fail("inconsistent content: the names count");
@@ -283,12 +287,22 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
   } catch (const std::exception& error) {
     damaged(file, std::string("the world in it: ") + error.what());
   }
-  // World::save leaves out the stop condition (a function): make_world's again.
-  if (!pockets.empty()) stop_at_pocket_contacts(*world, pockets);
-  // The scene's sensors are the world's last walls (make_world adds them last).
+  // The pockets must be the world's remove_ball sensors.
+  for (const WallId wall : pockets) {
+    if (wall >= world->wall_count() || world->sensor(wall) != SensorAction::remove_ball) {
+      damaged(file, "inconsistent content: pocket wall " + std::to_string(wall) +
+                        " is not a sensor that removes balls");
+    }
+  }
+  // The scene's sensors are the world's last walls before the pockets (make_world adds them so).
   std::vector<WallId> sensors;
+  if (world->wall_count() < scene.pockets.size() + scene.sensors.size()) {
+    damaged(file, "inconsistent content: the world has fewer walls than the scene's sensors");
+  }
+  const std::size_t first_sensor =
+      world->wall_count() - scene.pockets.size() - scene.sensors.size();
   for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
-    sensors.push_back(static_cast<WallId>(world->wall_count() - scene.sensors.size() + k));
+    sensors.push_back(static_cast<WallId>(first_sensor + k));
   }
   return {SceneWorld{std::move(*world),
                      std::move(scene),

@@ -52,7 +52,6 @@ BallDirectory::BallDirectory(const SceneWorld& built) {
   for (std::size_t i = 0; i < built.balls.size(); ++i) {
     if (!built.balls[i].is_null()) balls_.emplace(key(built.balls[i]), i);
   }
-  for (std::size_t k = 0; k < built.pockets.size(); ++k) pockets_.emplace(key(built.pockets[k]), k);
 }
 
 std::uint64_t BallDirectory::key(BallId id) {
@@ -62,12 +61,6 @@ std::uint64_t BallDirectory::key(BallId id) {
 std::optional<std::size_t> BallDirectory::ball_index(BallId id) const {
   const auto found = balls_.find(key(id));
   if (found == balls_.end()) return std::nullopt;
-  return found->second;
-}
-
-std::optional<std::size_t> BallDirectory::pocket_index(BallId id) const {
-  const auto found = pockets_.find(key(id));
-  if (found == pockets_.end()) return std::nullopt;
   return found->second;
 }
 
@@ -131,10 +124,20 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
       const SensorEvent& e = built.sensor_events[next_sensor_event];
       nlohmann::ordered_json line;
       line["time"] = built.start_time + e.time;
+      const auto pocket = std::find(built.pockets.begin(), built.pockets.end(), e.sensor);
+      if (pocket != built.pockets.end()) {
+        // A pocket's sensor took the ball: numbered among the scene's pockets.
+        line["kind"] = "potted";
+        line["ball"] = index_json(e.ball);
+        line["pocket"] = pocket - built.pockets.begin();
+        buffer_ += line.dump() + "\n";
+        continue;
+      }
       line["kind"] = e.kind == SensorEventKind::enter ? "sensor_enter" : "sensor_exit";
       line["ball"] = index_json(e.ball);
-      // The scene's sensors are the world's last walls, numbered from 0 among themselves.
-      line["sensor"] = e.sensor - (built.world.wall_count() - built.scene.sensors.size());
+      // Numbered among the scene's sensors.
+      const auto sensor = std::find(built.sensors.begin(), built.sensors.end(), e.sensor);
+      line["sensor"] = sensor - built.sensors.begin();
       if (e.removed) line["removed"] = true;
       buffer_ += line.dump() + "\n";
     }
@@ -144,13 +147,7 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
     const ContactEvent& c = contacts[n];
     nlohmann::ordered_json line;
     line["time"] = built.start_time + c.time;
-    const auto pocket_a = directory.pocket_index(c.a);
-    const auto pocket_b = directory.pocket_index(c.b);
-    if (c.kind == ContactKind::ball_ball && (pocket_a || pocket_b)) {
-      line["kind"] = "potted";
-      line["ball"] = index_json(pocket_a ? c.b : c.a);
-      line["pocket"] = pocket_a ? *pocket_a : *pocket_b;
-    } else if (c.kind == ContactKind::ball_ball) {
+    if (c.kind == ContactKind::ball_ball) {
       line["kind"] = "ball_ball";
       line["a"] = index_json(c.a);
       line["b"] = index_json(c.b);

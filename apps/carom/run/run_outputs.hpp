@@ -24,14 +24,12 @@ enum class FrameFormat : std::uint8_t { csv, xyz };
 class BallDirectory {
  public:
   explicit BallDirectory(const SceneWorld& built);
-  // The scene index of a ball, or of a pocket as pocket_index; nothing if unknown.
+  // The scene index of a ball; nothing if unknown.
   [[nodiscard]] std::optional<std::size_t> ball_index(BallId id) const;
-  [[nodiscard]] std::optional<std::size_t> pocket_index(BallId id) const;
 
  private:
   static std::uint64_t key(BallId id);
   std::unordered_map<std::uint64_t, std::size_t> balls_;
-  std::unordered_map<std::uint64_t, std::size_t> pockets_;
 };
 
 // Positions and velocities of every ball in the world, one frame at a time.

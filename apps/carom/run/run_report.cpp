@@ -71,8 +71,8 @@ std::string run_text(const RunOutcome& o) {
   text += "balls           " + std::to_string(o.balls_at_start) + " -> " +
           std::to_string(o.balls_at_end) + "\n";
   text += "collisions      " + std::to_string(o.collisions) + " (ball-ball " +
-          std::to_string(o.ball_ball) + ", ball-wall " + std::to_string(o.ball_wall) + ", potted " +
-          std::to_string(o.potted) + ")\n";
+          std::to_string(o.ball_ball) + ", ball-wall " + std::to_string(o.ball_wall) + ")\n";
+  if (o.potted > 0) text += "potted          " + std::to_string(o.potted) + "\n";
   text += "collisions/s    " + readable_count(o.collisions_per_second()) + "\n";
   text += "wall time       " + rounded(o.wall_seconds) + " s (setup " + rounded(o.setup_seconds) +
           " s)\n";

@@ -1,0 +1,112 @@
+// A ball on a cloth (src/core/table_motion.hpp): the textbook closed forms (a stun shot rolls at
+// 5/7 of its speed after 2v/(7·μs·g), a rolling ball stops after v²/(2·μr·g), a spin stops after
+// 2R|ωz|/(5·μsp·g)), and over random shots with side, top and back spin: the angular momentum
+// about the contact point is kept through the slide, the rolling velocity is v − 2/7·u, the
+// energy never rises, and each state leads to the next.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/table_motion.hpp"
+
+namespace carom::detail {
+namespace table_motion_tests {
+
+constexpr double kRadius = 0.028575;  // a pool ball, 57.15 mm across
+const Cloth kCloth{9.81, 0.2, 0.01, 0.044};
+
+TableBall ball(Vec2 velocity, Vec2 spin = {}, double twist = 0.0) {
+  return {velocity, spin, twist, kRadius};
+}
+
+// Energy over the mass: ½v² + ½·(2/5)R²|ω|².
+double energy(const TableBall& b) {
+  return 0.5 * length_squared(b.velocity) +
+         0.2 * b.radius * b.radius * (length_squared(b.spin) + b.twist * b.twist);
+}
+
+// Angular momentum about the contact point over the mass, in the plane: (2/5)R²·ω + R·(−vy, vx).
+Vec2 contact_momentum(const TableBall& b) {
+  return b.spin * (0.4 * b.radius * b.radius) + Vec2{-b.velocity.y, b.velocity.x} * b.radius;
+}
+
+TEST(TableMotion, AStunShotRollsAtFiveSeventhsOfItsSpeedAfterTheTextbookTime) {
+  const TableBall stun = ball({2.0, 0.0});
+  ASSERT_EQ(table_state(stun), TableState::sliding);
+  const double t = time_in_state(stun, kCloth);
+  EXPECT_DOUBLE_EQ(t, 2.0 * 2.0 / (7.0 * 0.2 * 9.81));
+  const TableStep end = evolve(stun, kCloth, t);
+  EXPECT_NEAR(end.ball.velocity.x, 2.0 * 5.0 / 7.0, 1e-15);
+  EXPECT_EQ(end.ball.velocity.y, 0.0);
+  EXPECT_EQ(table_state(end.ball), TableState::rolling);
+  // Displacement under constant deceleration μs·g: v·t − ½μs·g·t².
+  EXPECT_NEAR(end.displacement.x, 2.0 * t - 0.5 * 0.2 * 9.81 * t * t, 1e-15);
+}
+
+TEST(TableMotion, ARollingBallStopsAfterTheTextbookDistance) {
+  const Vec2 v{0.6, -0.8};  // speed 1
+  const TableBall rolling = ball(v, {0.8 / kRadius, 0.6 / kRadius});
+  ASSERT_EQ(table_state(rolling), TableState::rolling);
+  const double t = time_in_state(rolling, kCloth);
+  EXPECT_DOUBLE_EQ(t, 1.0 / (0.01 * 9.81));
+  const TableStep end = evolve(rolling, kCloth, t);
+  EXPECT_EQ(end.ball.velocity, (Vec2{}));
+  EXPECT_EQ(table_state(end.ball), TableState::stationary);
+  EXPECT_NEAR(length(end.displacement), 1.0 / (2.0 * 0.01 * 9.81), 1e-12);
+  // Halfway through, still rolling without slipping.
+  EXPECT_EQ(table_state(evolve(rolling, kCloth, 0.5 * t).ball), TableState::rolling);
+}
+
+TEST(TableMotion, ASpinInPlaceStopsAtTheClosedFormTime) {
+  const TableBall spinning = ball({}, {}, 30.0);
+  ASSERT_EQ(table_state(spinning), TableState::spinning);
+  const double t = time_in_state(spinning, kCloth);
+  EXPECT_DOUBLE_EQ(t, 2.0 * kRadius * 30.0 / (5.0 * 0.044 * 9.81));
+  EXPECT_EQ(evolve(spinning, kCloth, t).ball.twist, 0.0);
+  EXPECT_NEAR(evolve(spinning, kCloth, 0.5 * t).ball.twist, 15.0, 1e-12);
+  EXPECT_EQ(table_state(evolve(spinning, kCloth, t).ball), TableState::stationary);
+}
+
+TEST(TableMotion, RandomShotsKeepTheContactMomentumLoseEnergyAndPassThroughEachState) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 2000; ++k) {
+    // Speeds to 5 m/s, spins (top, back, side) to what a cue tip gives, English to 50 rad/s.
+    TableBall b = ball({5.0 * unit(random), 5.0 * unit(random)},
+                       {150.0 * unit(random), 150.0 * unit(random)}, 50.0 * unit(random));
+    if (table_state(b) != TableState::sliding) continue;
+    // Through the slide: the angular momentum about the contact point is kept (friction acts
+    // there), and the ball rolls at v − 2/7·u.
+    const Vec2 u0 = contact_velocity(b);
+    const Vec2 momentum = contact_momentum(b);
+    const double slide = time_in_state(b, kCloth);
+    const TableStep rolled = evolve(b, kCloth, slide);
+    const Vec2 after = contact_momentum(rolled.ball);
+    const double scale = length(momentum) + kRadius * 5.0;
+    EXPECT_NEAR(after.x, momentum.x, 1e-12 * scale) << "shot " << k;
+    EXPECT_NEAR(after.y, momentum.y, 1e-12 * scale) << "shot " << k;
+    const Vec2 expected = b.velocity - u0 * (2.0 / 7.0);
+    EXPECT_NEAR(rolled.ball.velocity.x, expected.x, 1e-12) << "shot " << k;
+    EXPECT_NEAR(rolled.ball.velocity.y, expected.y, 1e-12) << "shot " << k;
+    // Then each state to the next, the energy falling at every sample on the way.
+    double last = energy(b);
+    int states = 0;
+    for (TableBall now = b; table_state(now) != TableState::stationary && states < 5; ++states) {
+      const double span = time_in_state(now, kCloth);
+      ASSERT_TRUE(std::isfinite(span) && span >= 0.0) << "shot " << k;
+      for (int s = 1; s <= 8; ++s) {
+        const double e = energy(evolve(now, kCloth, span * s / 8.0).ball);
+        EXPECT_LE(e, last * (1.0 + 1e-12) + 1e-15) << "shot " << k;
+        last = e;
+      }
+      const TableState before = table_state(now);
+      now = evolve(now, kCloth, span).ball;
+      EXPECT_NE(table_state(now), before) << "shot " << k;
+    }
+    EXPECT_LE(states, 3) << "shot " << k;  // sliding, rolling, spinning at most
+  }
+}
+
+}  // namespace table_motion_tests
+}  // namespace carom::detail

@@ -4,9 +4,11 @@
 #include <emscripten/val.h>
 
 #include <cstdint>
+#include <string>
 #include <variant>
 #include <vector>
 
+#include "carom/error.hpp"
 #include "carom/science/contact_network.hpp"
 #include "carom/science/packing.hpp"
 #include "compression.hpp"
@@ -42,16 +44,33 @@ int add_ball(DrawnWorld& w, Vec2 position, Vec2 velocity, double radius, double 
 int add_segment(DrawnWorld& w, const Segment& s) {
   return guarded_call([&] { return w.add_segment(s); });
 }
+// A wall id from JavaScript: a negative one is refused as given, not as a huge unsigned number.
+WallId wall_id(const char* function, int wall) {
+  if (wall < 0) {
+    throw InvalidArgument(function, "wall", std::to_string(wall), "must be a wall id >= 0");
+  }
+  return static_cast<WallId>(wall);
+}
 // World::set_wall_motion between steps (a pinball flipper): motion.duration may be Infinity.
 void set_wall_motion(DrawnWorld& w, int wall, const WallMotion& motion) {
-  guarded_call([&] { w.world().set_wall_motion(static_cast<WallId>(wall), motion); });
+  guarded_call(
+      [&] { w.world().set_wall_motion(wall_id("DrawnWorld::set_wall_motion", wall), motion); });
 }
 WallMotion wall_motion(const DrawnWorld& w, int wall) {
-  return guarded_call([&] { return w.world().wall_motion(static_cast<WallId>(wall)); });
+  return guarded_call(
+      [&] { return w.world().wall_motion(wall_id("DrawnWorld::wall_motion", wall)); });
 }
 // A segment wall where it is now (a moving one's too).
 Segment wall_segment(const DrawnWorld& w, int wall) {
-  return guarded_call([&] { return std::get<Segment>(w.world().wall(static_cast<WallId>(wall))); });
+  return guarded_call([&] {
+    constexpr const char* kFunction = "DrawnWorld::wall_segment";
+    const auto shape = w.world().wall(wall_id(kFunction, wall));
+    const auto* segment = std::get_if<Segment>(&shape);
+    if (segment == nullptr) {
+      throw InvalidArgument(kFunction, "wall", std::to_string(wall), "must name a segment");
+    }
+    return *segment;
+  });
 }
 int add_sensor(DrawnWorld& w, const Segment& s, bool removes) {
   return guarded_call([&] { return w.add_sensor(s, removes); });

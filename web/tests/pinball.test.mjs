@@ -1,11 +1,14 @@
 // "Pinball": a launched ball goes up the lane, round the table and down the drain (a sensor that
 // removes it), never leaving the table; the total energy (kinetic + potential, as the page shows
-// them) never rises between a launch and the next launch or drain; the rollovers' score counts
-// their sensors' enters; the space bar launches and Reset clears the table.
+// them) never rises between a launch and the next launch or drain but in the frames a flipper
+// swings in; a flipper key or button swings it to its stop and back, a flip sends a ball up the
+// table, and a ball still drains between raised flippers; the bindings of moving walls; the
+// rollovers' score counts their sensors' enters; the space bar launches and Reset clears the
+// table.
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {OUTPUT, openBrowser, openPage, openTouchPage, readout} from './browser.mjs';
 
 // The ball drains after about 10 s of table time; a loaded machine gives fewer frames.
 const RUN_TIMEOUT_MS = 120000;
@@ -13,6 +16,51 @@ const RUN_TIMEOUT_MS = 120000;
 let session;
 before(async () => { session = await openBrowser(); });
 after(async () => { await session?.close(); });
+
+// The energy log's rule: between one launch or drain and the next the total (kinetic + potential)
+// can only fall (every bounce has restitution 0.8, and carom keeps the total along every flight
+// and slide), except in a frame a flipper swings in: a swing is an event like a launch, the
+// flipper doing work on the ball it hits. Log entries up to `after` (a time) are left out (a ball
+// the test put in play). Returns the frames compared and the most the total rose in one frame
+// with a swinging flipper.
+function checkEnergy(log, after = -Infinity) {
+  let compared = 0;
+  let flipWork = 0;
+  for (let k = 1; k < log.length; ++k) {
+    const [a, b] = [log[k - 1], log[k]];
+    if (a.time <= after) continue;
+    if (a.launched !== b.launched || a.drained !== b.drained) continue;
+    if (a.flips !== b.flips || b.swinging) {
+      flipWork = Math.max(flipWork, b.total - a.total);
+      continue;
+    }
+    assert.ok(b.total <= a.total + 1e-9 * Math.abs(a.total),
+              `the total energy rose from ${a.total} to ${b.total} at t = ${b.time}`);
+    ++compared;
+  }
+  return {compared, flipWork};
+}
+
+// Flipper `side`'s tip (0 left, 1 right) where it is now, where it rests and where its up stop
+// is: the rest tip turned by the swing about the pivot (the left counter-clockwise).
+function flipperTips(page, side) {
+  return page.evaluate((side) => {
+    const p = window.caromPinball;
+    const rest = p.table.flippers[side];
+    const angle = (side === 0 ? 1 : -1) * p.flipperSwing;
+    const [dx, dy] = [rest.b.x - rest.a.x, rest.b.y - rest.a.y];
+    const id = p.flipperIds[side];
+    return {
+      now: p.world.wall_segment(id).b,
+      rest: rest.b,
+      up: {x: rest.a.x + dx * Math.cos(angle) - dy * Math.sin(angle),
+           y: rest.a.y + dx * Math.sin(angle) + dy * Math.cos(angle)},
+      moving: p.world.wall_motion(id).duration > 0,
+    };
+  }, side);
+}
+
+const near = (p, q) => Math.abs(p.x - q.x) < 1e-9 && Math.abs(p.y - q.y) < 1e-9;
 
 function table(page) {
   return page.evaluate(() => {
@@ -57,18 +105,8 @@ test('a launched ball goes round the table, stays on it, loses energy only in bo
   // radius (the drain sensor removes it as its edge reaches the line).
   const gone = await page.evaluate(() => window.caromPinball.world.ball_count());
   assert.equal(gone, 6, 'only the bumpers and posts are left');
-  // Between the launch and the drain the total can only fall: every bounce has restitution 0.8,
-  // and carom keeps kinetic + potential energy along every flight and slide.
-  const log = await page.evaluate(() => window.caromPinball.energyLog);
-  let compared = 0;
-  for (let k = 1; k < log.length; ++k) {
-    const [a, b] = [log[k - 1], log[k]];
-    if (a.launched !== b.launched || a.drained !== b.drained) continue;
-    if (a.flips !== b.flips || b.swinging) continue;  // a swinging flipper does work
-    assert.ok(b.total <= a.total + 1e-9 * Math.abs(a.total),
-              `the total energy rose from ${a.total} to ${b.total} at t = ${b.time}`);
-    ++compared;
-  }
+  // Between the launch and the drain the total can only fall (no flipper moved).
+  const {compared} = checkEnergy(await page.evaluate(() => window.caromPinball.energyLog));
   assert.ok(compared > 100, `${compared} frames compared`);
   await page.waitForTimeout(200);
   assert.equal(await readout(page, 'drained'), '1');
@@ -80,18 +118,23 @@ test('a launched ball goes round the table, stays on it, loses energy only in bo
 test('a flipper key swings it up, it cradles a ball, and a second flip sends the ball up the table',
      async () => {
   const {page, problems} = await openPage(session, 'pinball.html');
-  const tip = () => page.evaluate(() => {
-    const p = window.caromPinball;
-    return p.world.wall_segment(p.flipperIds[0]).b;
-  });
-  const rest = await tip();
+  const tip = async () => (await flipperTips(page, 0)).now;
+  const {rest, up: stop} = await flipperTips(page, 0);
+  assert.ok(near(await tip(), rest), 'the flipper starts at rest');
   await page.keyboard.down('z');
   await page.waitForTimeout(300);
-  const up = await tip();
-  // Turned 0.84 rad up about its pivot: the tip rose by 2.6 diameters.
-  assert.ok(up.y > rest.y + 2.4, `the tip rose from ${rest.y} to ${up.y}`);
+  // Turned up about its pivot to its stop exactly (the swing ends inside a frame, no overshoot),
+  // the tip 2.6 diameters higher, and standing still there.
+  const raised = await flipperTips(page, 0);
+  assert.ok(near(raised.now, stop), `the tip is at (${raised.now.x}, ${raised.now.y}), not at ` +
+            `its stop (${stop.x}, ${stop.y})`);
+  assert.ok(stop.y > rest.y + 2.4, `the stop is at ${stop.y}`);
+  assert.ok(!raised.moving, 'a flipper held up stands still');
   // A ball dropped onto the raised flipper rolls down it into the cradle by the slope wall.
-  const ball = await page.evaluate(() => window.caromPinball.dropBall({x: 7.5, y: 8}));
+  const [ball, dropTime] = await page.evaluate(() => {
+    const p = window.caromPinball;
+    return [p.dropBall({x: 7.5, y: 8}), p.world.time()];
+  });
   const state = () => page.evaluate((i) => {
     const w = window.caromPinball.world;
     return {p: w.position(i), v: w.velocity(i), audit: w.audit()};
@@ -113,18 +156,164 @@ test('a flipper key swings it up, it cradles a ball, and a second flip sends the
   assert.ok(Math.abs(back.x - rest.x) < 1e-9 && Math.abs(back.y - rest.y) < 1e-9,
             `the tip came back to (${back.x}, ${back.y}), not (${rest.x}, ${rest.y})`);
   // Flip again: the ball, rolling on the flipper, is struck and goes up the table.
+  const before = await state();
+  assert.ok(Math.abs(before.v.y) < 5, `the ball was nearly still on the flipper: ${before.v.y}`);
   await page.keyboard.down('z');
   let highest = 0;
+  let fastestUp = -Infinity;
   const flight = Date.now() + 5000;
   while (highest < 12 && Date.now() < flight) {
     await page.waitForTimeout(50);
     seen = await state();
     assert.equal(seen.audit, '');
     highest = Math.max(highest, seen.p.y);
+    fastestUp = Math.max(fastestUp, seen.v.y);
   }
   assert.ok(highest >= 12, `the flipped ball rose only to ${highest}`);
+  // Rising from the cradle (y ≈ 5.5) past 12 under g = 40 takes an upward speed over 22.
+  assert.ok(fastestUp > 15, `the flipped ball's upward speed was at most ${fastestUp}`);
   await page.keyboard.up('z');
+  // The log's rule holds from the drop on outside the swings, and the flip did work on the ball:
+  // it rose in the swinging frame by far more than any rounding.
+  const {compared, flipWork} =
+      checkEnergy(await page.evaluate(() => window.caromPinball.energyLog), dropTime);
+  assert.ok(compared > 30, `${compared} frames compared`);
+  assert.ok(flipWork > 100, `the flip added only ${flipWork} to the total energy`);
   await page.screenshot({path: `${OUTPUT}/pinball-flipped.png`});
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a Flip button holds its flipper up while pressed, and a ball drains between raised flippers',
+     async () => {
+  const {page, problems} = await openPage(session, 'pinball.html');
+  const right = await flipperTips(page, 1);
+  await page.hover('#flip-right');
+  await page.mouse.down();
+  await page.keyboard.down('ArrowLeft');
+  await page.waitForTimeout(300);
+  const [left, raised] = [await flipperTips(page, 0), await flipperTips(page, 1)];
+  assert.ok(near(raised.now, right.up), `the right tip is at (${raised.now.x}, ${raised.now.y})`);
+  assert.ok(near(left.now, left.up), `the left tip is at (${left.now.x}, ${left.now.y})`);
+  // Straight down the middle, between the raised tips: the drain takes it.
+  await page.evaluate(() => {
+    const p = window.caromPinball;
+    p.dropBall({x: p.table.upper.x / 2 - 0.75, y: 10});
+  });
+  await page.waitForFunction(() => window.caromPinball.drained === 1, null, {timeout: 10000});
+  assert.deepEqual(await page.evaluate(() => window.caromPinball.inPlay), []);
+  await page.mouse.up();
+  await page.keyboard.up('ArrowLeft');
+  await page.waitForTimeout(200);
+  for (const side of [0, 1]) {
+    const tips = await flipperTips(page, side);
+    assert.ok(near(tips.now, tips.rest), `flipper ${side} is back at (${tips.now.x}, ` +
+              `${tips.now.y}), not at rest (${tips.rest.x}, ${tips.rest.y})`);
+    assert.ok(!tips.moving);
+  }
+  // A key let go while the page has no focus: leaving the page drops the flipper all the same.
+  await page.keyboard.down('z');
+  await page.waitForTimeout(200);
+  assert.ok(near((await flipperTips(page, 0)).now, left.up));
+  await page.evaluate(() => window.dispatchEvent(new Event('blur')));
+  await page.waitForTimeout(200);
+  assert.ok(near((await flipperTips(page, 0)).now, left.rest), 'the flipper stayed up');
+  await page.keyboard.up('z');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('on a touch screen a finger held on a Flip button holds the flipper up, even as it slides',
+     async () => {
+  const {context, page, problems} = await openTouchPage(session, 'pinball.html');
+  const box = await page.locator('#flip-left').boundingBox();
+  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  const touch = await context.newCDPSession(page);
+  const finger = (type, dx = 0) => touch.send('Input.dispatchTouchEvent', {
+    type, touchPoints: type === 'touchEnd' ? [] : [{x: x + dx, y: y + dx}]});
+  await finger('touchStart');
+  await page.waitForTimeout(200);
+  // A slide that would start a scroll (and cancel the press) where the page may scroll.
+  for (let d = 2; d <= 12; d += 2) await finger('touchMove', d);
+  await page.waitForTimeout(200);
+  const held = await flipperTips(page, 0);
+  assert.ok(near(held.now, held.up), `the tip is at (${held.now.x}, ${held.now.y})`);
+  await finger('touchEnd');
+  await page.waitForTimeout(200);
+  const released = await flipperTips(page, 0);
+  assert.ok(near(released.now, released.rest),
+            `the tip is at (${released.now.x}, ${released.now.y})`);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('a moving wall from JavaScript: its motion, its drawing where it is now, and refusals',
+     async () => {
+  const {page, problems} = await openPage(session, 'index.html');
+  const outcome = await page.evaluate(async () => {
+    const {carom} = await import('./js/carom.js');
+    const world = new carom.DrawnWorld({boundary: carom.Boundary.open, lower: {x: -5, y: -5},
+                                        upper: {x: 5, y: 5}, restitution: 1, collapse_time: 0,
+                                        cell_size: 0, gravity: {x: 0, y: 0}, rest_height: 1e-3});
+    const out = {};
+    try {
+      const wall = world.add_segment({a: {x: 0, y: 0}, b: {x: 2, y: 0}});
+      const sensor = world.add_sensor_segment({a: {x: 3, y: 3}, b: {x: 4, y: 3}}, false);
+      world.add_arc({center: {x: -3, y: -3}, radius: 1, start_angle: 0, end_angle: 1});
+      const arc = sensor + 1;
+      const still = {velocity: {x: 0, y: 0}, angular_velocity: 0, pivot: {x: 0, y: 0},
+                     duration: 0};
+      out.before = world.wall_motion(wall);
+      const turn = {velocity: {x: 0, y: 0}, angular_velocity: Math.PI / 2, pivot: {x: 0, y: 0},
+                    duration: Infinity};
+      world.set_wall_motion(wall, turn);
+      out.forever = world.wall_motion(wall).duration;
+      world.set_wall_motion(wall, {...turn, duration: 1});
+      world.step(0.5);
+      out.half = {motion: world.wall_motion(wall), drawn: world.segments()[0]};
+      world.step(1);
+      out.end = {motion: world.wall_motion(wall), drawn: world.segments()[0],
+                 segment: world.wall_segment(wall)};
+      out.still = still;
+      const refusal = (f) => {
+        try {
+          f();
+        } catch (error) {
+          return error instanceof Error ? error.message : `not an Error: ${error}`;
+        }
+        return 'no error';
+      };
+      out.errors = {
+        sensor: refusal(() => world.set_wall_motion(sensor, turn)),
+        nan: refusal(() => world.set_wall_motion(wall, {...turn, angular_velocity: NaN})),
+        negative: refusal(() => world.set_wall_motion(wall, {...turn, duration: -1})),
+        arc: refusal(() => world.wall_segment(arc)),
+        id: refusal(() => world.wall_motion(-1)),
+      };
+      out.after = world.wall_motion(wall).duration;  // the module still answers
+    } finally {
+      world.delete();
+    }
+    return out;
+  });
+  assert.deepEqual(outcome.before, outcome.still);
+  assert.equal(outcome.forever, Infinity);
+  assert.ok(Math.abs(outcome.half.motion.duration - 0.5) < 1e-12, JSON.stringify(outcome.half));
+  assert.equal(outcome.half.motion.angular_velocity, Math.PI / 2);
+  // Half way: turned by π/4; segments() draws it where it is now.
+  const s = Math.SQRT1_2 * 2;
+  assert.ok(near(outcome.half.drawn.b, {x: s, y: s}), JSON.stringify(outcome.half.drawn));
+  // The motion ended at its duration, a quarter turn, and the wall stands still there.
+  assert.deepEqual(outcome.end.motion, outcome.still);
+  assert.ok(near(outcome.end.drawn.b, {x: 0, y: 2}), JSON.stringify(outcome.end.drawn));
+  assert.deepEqual(outcome.end.segment, outcome.end.drawn);
+  const {errors} = outcome;
+  assert.match(errors.sensor, /^carom::World::set_wall_motion: wall = 1: is a sensor/);
+  assert.match(errors.nan, /^carom::World::set_wall_motion: motion\.angular_velocity = nan/i);
+  assert.match(errors.negative, /^carom::World::set_wall_motion: motion\.duration = -1/);
+  assert.match(errors.arc, /^carom::DrawnWorld::wall_segment: wall = 2: must name a segment/);
+  assert.match(errors.id, /^carom::DrawnWorld::wall_motion: wall = -1: must be a wall id >= 0/);
+  assert.equal(outcome.after, 0);
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -11,7 +11,7 @@
 import {attempt, carom} from './carom.js';
 import {packColour} from './disc_raster.js';
 import {num} from './format.js';
-import {BALL_RADIUS, DRAIN_Y, LANE_X, pinballTable} from './pinball_table.js';
+import {BALL_RADIUS, DRAIN_Y, FLIPPER_SWING, LANE_X, pinballTable} from './pinball_table.js';
 import {fillReadout, slider} from './sliders.js';
 import {WorldCanvas} from './world_canvas.js';
 
@@ -21,11 +21,10 @@ const GRAVITY = 40;
 const RESTITUTION = 0.8;  // the ball's, so every bounce (ball with bumper or wall) has it
 const REST_HEIGHT = 1e-3;
 const ENERGY_KEPT = 1200;  // frames of the energy log (for the tests)
-// A flipper turns between its rest and its up angle (FLIPPER_SWING radians apart) at
-// FLIPPER_SPEED radians a second: a swing takes 30 ms, its tip moving at about 90 diameters a
+// A flipper turns between its rest and its up angle (FLIPPER_SWING radians apart, the table's)
+// at FLIPPER_SPEED radians a second: a swing takes 30 ms, its tip moving at about 90 diameters a
 // second.
 const FLIPPER_SPEED = 28;
-const FLIPPER_SWING = 0.84;
 
 const BALL_COLOUR = packColour('#9e9e9e');
 const RIM_COLOUR = packColour('#424242');
@@ -226,6 +225,11 @@ document.addEventListener('keyup', (event) => {
   event.preventDefault();
   swing(FLIPPER_KEYS[event.key], false);
 });
+// A key let go while the page had no focus sends no keyup: leaving the page drops both flippers.
+window.addEventListener('blur', () => {
+  swing(0, false);
+  swing(1, false);
+});
 // The on-screen flipper buttons, for touch: held down, the flipper stays up.
 for (const [button, side] of [['flip-left', 0], ['flip-right', 1]]) {
   const element = document.getElementById(button);
@@ -233,6 +237,8 @@ for (const [button, side] of [['flip-left', 0], ['flip-right', 1]]) {
   for (const type of ['pointerup', 'pointerleave', 'pointercancel']) {
     element.addEventListener(type, () => swing(side, false));
   }
+  // A long press on a phone would otherwise open a menu or select the button's text.
+  element.addEventListener('contextmenu', (event) => event.preventDefault());
 }
 window.addEventListener('resize', () => draw());
 
@@ -246,6 +252,7 @@ window.caromPinball = {
   get score() { return score; },
   get energyLog() { return [...energyLog]; },
   get flipperIds() { return [...flipperIds]; },
+  flipperSwing: FLIPPER_SWING,
   // A ball put in play at p, at rest (for the flipper test).
   dropBall(p) {
     const index = attempt(() => world.add_ball(p, {x: 0, y: 0}, BALL_RADIUS, 1));

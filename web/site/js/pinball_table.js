@@ -5,9 +5,11 @@
 // A box holds it all. The plunger's lane runs up the right side behind a wall; at the top two
 // rounded corners (quarter circles, as short segments) turn a launched ball left across the
 // table. Below: three round bumpers and three posts (immovable balls), two triangular slingshots,
-// two slanted walls that lead down to the flippers (static segments), and between the flippers'
-// tips the gap to the drain. Two rollover lanes between the top posts are sensors: a ball
-// passing one scores.
+// two slanted walls that lead down to the flippers, and between the flippers' tips the gap to the
+// drain. Two rollover lanes between the top posts are sensors: a ball passing one scores. The
+// flippers are given at rest, each from its pivot (a, its outer end, where the slanted wall
+// meets it) to its tip (b); the page swings them up by FLIPPER_SWING about the pivot (the left
+// counter-clockwise, the right clockwise) and back.
 
 export const WIDTH = 20;
 export const HEIGHT = 36;
@@ -15,6 +17,9 @@ export const LANE_X = 18.5;  // the plunger lane's inner wall; the lane is the s
 export const BALL_RADIUS = 0.5;
 // The drain: a sensor along this line, left of the lane, removes the ball that reaches it.
 export const DRAIN_Y = 2;
+// The angle between a flipper's rest and its up stop, in radians: from 24° below the horizontal
+// to 24° above, the tip rising by 2.6 ball diameters.
+export const FLIPPER_SWING = 0.84;
 const CORNER_RADIUS = 5;
 const CORNER_SEGMENTS = 8;  // short enough that the bend reads as a curve
 

@@ -60,14 +60,20 @@ def test_bad_motions_are_refused_naming_the_argument():
     world = carom.World(boundary="box", lower=(-5.0, -5.0), upper=(5.0, 5.0))
     wall = world.add_segment((0.0, 0.0), (1.0, 0.0))
     sensor = world.add_segment_sensor((0.0, 1.0), (1.0, 1.0))
-    with pytest.raises(ValueError, match="box boundary"):
-        world.set_wall_motion(0, velocity=(1.0, 0.0))
-    with pytest.raises(ValueError, match="sensor"):
-        world.set_wall_motion(sensor, velocity=(1.0, 0.0))
-    with pytest.raises(ValueError, match="motion.velocity"):
+    for side in range(4):
+        with pytest.raises(carom.InvalidArgument, match=f"wall = {side}: .*box boundary"):
+            world.set_wall_motion(side, velocity=(1.0, 0.0))
+    with pytest.raises(carom.InvalidArgument, match=f"wall = {sensor}: .*sensor"):
+        world.set_wall_motion(sensor, carom.WallMotion(velocity=(1.0, 0.0)))
+    with pytest.raises(carom.InvalidArgument, match="motion.velocity"):
         world.set_wall_motion(wall, velocity=(math.nan, 0.0))
-    with pytest.raises(ValueError, match="motion.duration"):
+    with pytest.raises(carom.InvalidArgument, match="motion.angular_velocity"):
+        world.set_wall_motion(wall, angular_velocity=math.nan)
+    with pytest.raises(carom.InvalidArgument, match="motion.duration"):
         world.set_wall_motion(wall, angular_velocity=1.0, duration=-1.0)
+    with pytest.raises(carom.InvalidArgument, match="wall = 2: .*box boundary"):
+        world.remove_wall(2)
+    assert world.wall_motion(wall) == carom.WallMotion(duration=0.0)
 
 
 def test_save_and_load_continue_a_motion_bit_for_bit(tmp_path):
@@ -80,7 +86,11 @@ def test_save_and_load_continue_a_motion_bit_for_bit(tmp_path):
     path = tmp_path / "world.carom"
     world.save(str(path))
     resumed = carom.World.load(str(path))
+    assert resumed.wall_motion(bar) == world.wall_motion(bar)
+    assert resumed.wall_motion(bar).moves() and resumed.wall_motion(bar).duration == 2.0
+    assert resumed.wall(bar) == world.wall(bar)
     world.step(4.0)
     resumed.step(4.0)
     assert world.wall_motion(bar) == resumed.wall_motion(bar)
+    assert world.wall(bar) == resumed.wall(bar)
     assert (world.positions == resumed.positions).all()

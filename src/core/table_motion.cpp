@@ -113,4 +113,32 @@ TableStep evolve(const TableBall& ball, const Cloth& cloth, double t) {
   return out;
 }
 
+TableBall strike(const CueStrike& cue, double mass, double radius) {
+  // The cue's direction d, the player's right s (horizontal) and up u = s × d, all unit and
+  // orthogonal.
+  const double c = std::cos(cue.elevation);
+  const double e = std::sin(cue.elevation);
+  const double cf = std::cos(cue.direction);
+  const double sf = std::sin(cue.direction);
+  const double d[3] = {c * cf, c * sf, -e};
+  const double s[3] = {sf, -cf, 0.0};
+  const double u[3] = {s[1] * d[2] - s[2] * d[1], s[2] * d[0] - s[0] * d[2],
+                       s[0] * d[1] - s[1] * d[0]};
+  // The tip meets the ball at r = −depth·d + side·s + height·u from the centre; its lever about
+  // the centre is r × d = side·u − height·s, of squared length side² + height².
+  const double inertia = 0.4 * mass * radius * radius;
+  const double lever = cue.side * cue.side + cue.height * cue.height;
+  // The impulse that gives the tip's point and the cue the relative speed −e·V along d.
+  const double impulse =
+      (1.0 + cue.restitution) * cue.speed / (1.0 / cue.cue_mass + 1.0 / mass + lever / inertia);
+  TableBall out;
+  out.radius = radius;
+  // The table takes the impulse's downward part: the centre moves along d's horizontal part.
+  out.velocity = Vec2{d[0], d[1]} * (impulse / mass);
+  const double k = impulse / inertia;
+  out.spin = Vec2{cue.side * u[0] - cue.height * s[0], cue.side * u[1] - cue.height * s[1]} * k;
+  out.twist = (cue.side * u[2] - cue.height * s[2]) * k;
+  return out;
+}
+
 }  // namespace carom::detail

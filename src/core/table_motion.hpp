@@ -52,4 +52,23 @@ struct TableStep {
 // The acceleration of the centre in the present state (constant within it).
 [[nodiscard]] Vec2 table_acceleration(const TableBall& ball, const Cloth& cloth);
 
+// A cue's strike: the cue (mass `cue_mass`) moving at `speed` along `direction` (an angle in the
+// table's plane, radians) and tilted `elevation` above the table, its tip meeting the ball
+// `side` to the right of the line through the centre and `height` above it, both measured across
+// the cue as the player sees the ball (side² + height² < R²), bouncing with `restitution`.
+struct CueStrike {
+  double speed = 0.0;
+  double direction = 0.0;
+  double elevation = 0.0;
+  double side = 0.0;
+  double height = 0.0;
+  double cue_mass = 0.54;
+  double restitution = 1.0;
+};
+
+// The ball at rest struck so (mass `mass`, radius `radius`): one impulse along the cue through
+// the tip's point of contact (no tip friction, no squirt), the table taking its downward part (no
+// jump). Derivation: docs/derivation.md, "A ball on a cloth".
+[[nodiscard]] TableBall strike(const CueStrike& cue, double mass, double radius);
+
 }  // namespace carom::detail

@@ -68,6 +68,62 @@ TEST(TableMotion, ASpinInPlaceStopsAtTheClosedFormTime) {
   EXPECT_EQ(table_state(evolve(spinning, kCloth, t).ball), TableState::stationary);
 }
 
+TEST(TableMotion, ACentreStrikeGivesTheMomentumOfAnElasticImpactAndNoSpin) {
+  // A level cue of mass M at V through the centre: J = (1 + e)·V / (1/M + 1/m).
+  const double m = 0.17;
+  const TableBall b = strike({2.0, 0.3, 0.0, 0.0, 0.0, 0.54, 0.8}, m, kRadius);
+  const double j = 1.8 * 2.0 / (1.0 / 0.54 + 1.0 / m);
+  EXPECT_NEAR(b.velocity.x, j / m * std::cos(0.3), 1e-14);
+  EXPECT_NEAR(b.velocity.y, j / m * std::sin(0.3), 1e-14);
+  EXPECT_EQ(b.twist, 0.0);
+  EXPECT_NEAR(length(b.spin), 0.0, 1e-12);
+  EXPECT_EQ(table_state(b), TableState::sliding);  // a stun shot
+}
+
+TEST(TableMotion, AStrikeTwoFifthsOfTheRadiusAboveTheCentreRollsAtOnce) {
+  // The natural roll: R·ω = v when height = I/(m·R) = 2R/5.
+  const TableBall b = strike({3.0, 1.1, 0.0, 0.0, 0.4 * kRadius}, 0.17, kRadius);
+  EXPECT_NEAR(length(contact_velocity(b)), 0.0, 1e-12 * length(b.velocity));
+  // Higher: follow (the contact point slips backwards); lower: draw.
+  const TableBall follow = strike({3.0, 0.0, 0.0, 0.0, 0.6 * kRadius}, 0.17, kRadius);
+  const TableBall draw = strike({3.0, 0.0, 0.0, 0.0, -0.5 * kRadius}, 0.17, kRadius);
+  EXPECT_LT(contact_velocity(follow).x, 0.0);
+  EXPECT_GT(contact_velocity(draw).x, draw.velocity.x);
+  // Right of centre turns the ball counter-clockwise seen from above; left, clockwise.
+  EXPECT_GT(strike({3.0, 0.0, 0.0, 0.5 * kRadius, 0.0}, 0.17, kRadius).twist, 0.0);
+  EXPECT_LT(strike({3.0, 0.0, 0.0, -0.5 * kRadius, 0.0}, 0.17, kRadius).twist, 0.0);
+}
+
+TEST(TableMotion, RandomStrikesNeverMakeEnergyAndKeepTheImpulsesLever) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double m = 0.17;
+  const double inertia = 0.4 * m * kRadius * kRadius;
+  for (int k = 0; k < 2000; ++k) {
+    CueStrike cue;
+    cue.speed = 4.0 * (1.0 + unit(random));
+    cue.direction = 3.2 * unit(random);
+    cue.elevation = 0.7 * (1.0 + unit(random));
+    cue.side = 0.6 * kRadius * unit(random);
+    cue.height = 0.6 * kRadius * unit(random);
+    cue.restitution = k % 2 == 0 ? 1.0 : 0.5 + 0.5 * unit(random);
+    const TableBall b = strike(cue, m, kRadius);
+    // The impulse J, from the speed: |v| = J·cos(elevation)/m.
+    const double j = length(b.velocity) * m / std::cos(cue.elevation);
+    // Energy: the ball's and the cue's after the strike are at most the cue's before.
+    const double cue_after = cue.speed - j / cue.cue_mass;
+    const double after = 0.5 * m * length_squared(b.velocity) +
+                         0.5 * inertia * (length_squared(b.spin) + b.twist * b.twist) +
+                         0.5 * cue.cue_mass * cue_after * cue_after;
+    EXPECT_LE(after, 0.5 * cue.cue_mass * cue.speed * cue.speed * (1.0 + 1e-12)) << "strike " << k;
+    // The spin is the impulse's moment about the centre over I: |ω| = J·√(side² + height²)/I.
+    const double lever = std::sqrt(cue.side * cue.side + cue.height * cue.height);
+    EXPECT_NEAR(std::sqrt(length_squared(b.spin) + b.twist * b.twist), j * lever / inertia,
+                1e-9 * (1.0 + j * lever / inertia))
+        << "strike " << k;
+  }
+}
+
 TEST(TableMotion, RandomShotsKeepTheContactMomentumLoseEnergyAndPassThroughEachState) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

@@ -141,4 +141,39 @@ TableBall strike(const CueStrike& cue, double mass, double radius) {
   return out;
 }
 
+void collide_on_table(TableBall& a, TableBall& b, Vec2 normal, double restitution,
+                      double friction) {
+  const double approach = dot(a.velocity - b.velocity, normal);
+  if (!(approach > 0.0)) return;
+  const double radius = a.radius;
+  // Impulses over the mass: the normal one, (1 + e)/2 of the approach for equal balls.
+  const double normal_impulse = 0.5 * (1.0 + restitution) * approach;
+  // The slip of a's surface past b's at the contact point (3D: the spins give it a vertical part):
+  // (va − vb) + R·(ωa + ωb) × n, less its part along n.
+  const double n[3] = {normal.x, normal.y, 0.0};
+  const double w[3] = {a.spin.x + b.spin.x, a.spin.y + b.spin.y, a.twist + b.twist};
+  double slip[3] = {a.velocity.x - b.velocity.x + radius * (w[1] * n[2] - w[2] * n[1]),
+                    a.velocity.y - b.velocity.y + radius * (w[2] * n[0] - w[0] * n[2]),
+                    radius * (w[0] * n[1] - w[1] * n[0])};
+  const double along = slip[0] * n[0] + slip[1] * n[1];
+  slip[0] -= along * n[0];
+  slip[1] -= along * n[1];
+  const double size = std::sqrt(slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]);
+  // A friction impulse J (over the mass) changes the slip by 7·J (each ball's centre by J, each
+  // spin by 5/2·J/R at the lever R): it stops at sticking, |slip|/7, or at friction·normal.
+  const double tangential = size > 0.0 ? std::min(friction * normal_impulse, size / 7.0) : 0.0;
+  const double t[3] = {size > 0.0 ? slip[0] / size : 0.0, size > 0.0 ? slip[1] / size : 0.0,
+                       size > 0.0 ? slip[2] / size : 0.0};
+  // On a: −J·t at +R·n; on b: +J·t at −R·n. Both spins turn by −(5/2)·J/R·(n × t).
+  const double k = 2.5 * tangential / radius;
+  const double turn[3] = {-k * (n[1] * t[2] - n[2] * t[1]), -k * (n[2] * t[0] - n[0] * t[2]),
+                          -k * (n[0] * t[1] - n[1] * t[0])};
+  a.velocity = a.velocity - normal * normal_impulse - Vec2{t[0], t[1]} * tangential;
+  b.velocity = b.velocity + normal * normal_impulse + Vec2{t[0], t[1]} * tangential;
+  a.spin = a.spin + Vec2{turn[0], turn[1]};
+  b.spin = b.spin + Vec2{turn[0], turn[1]};
+  a.twist += turn[2];
+  b.twist += turn[2];
+}
+
 }  // namespace carom::detail

@@ -71,4 +71,12 @@ struct CueStrike {
 // jump). Derivation: docs/derivation.md, "A ball on a cloth".
 [[nodiscard]] TableBall strike(const CueStrike& cue, double mass, double radius);
 
+// Two equal balls on the table meeting, `normal` the unit vector from a's centre to b's: the
+// normal impulse of restitution `restitution` through the centres, and the friction of the balls'
+// surfaces (coefficient `friction`) against their slip at the contact point, which throws the
+// struck ball off the line of centres and changes both spins; the friction stops at sticking.
+// Vertical velocities are not kept (the balls stay on the table). Derivation: docs/derivation.md,
+// "A ball on a cloth".
+void collide_on_table(TableBall& a, TableBall& b, Vec2 normal, double restitution, double friction);
+
 }  // namespace carom::detail

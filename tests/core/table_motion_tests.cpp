@@ -124,6 +124,69 @@ TEST(TableMotion, RandomStrikesNeverMakeEnergyAndKeepTheImpulsesLever) {
   }
 }
 
+// The angle of the struck ball's velocity from the line of centres.
+double throw_angle(Vec2 velocity, Vec2 normal) {
+  return std::atan2(cross(normal, velocity), dot(normal, velocity));
+}
+
+TEST(TableMotion, AStunShotThrowsTheObjectBallByTheFrictionsClosedForm) {
+  // A cue ball sliding without spin at v meets a ball at rest at cut angle φ (the line of
+  // centres φ from its path), e = 1, ball friction μ. The slip at the contact is v·sin φ across the
+  // line and the normal impulse v·cos φ: the friction slides throughout when sin φ / 7 > μ·cos φ,
+  // throwing the object ball atan(μ) off the line; below that it sticks, at atan(tan φ / 7).
+  const double mu = 0.06;
+  for (const double cut : {0.5236, 0.0873}) {
+    TableBall cue = ball({1.0, 0.0});
+    TableBall object = ball({});
+    const Vec2 normal{std::cos(cut), -std::sin(cut)};  // the object ball lies right of the path
+    collide_on_table(cue, object, normal, 1.0, mu);
+    const double sliding = std::atan(mu);
+    const double sticking = std::atan(std::tan(cut) / 7.0);
+    // Thrown towards the cue ball's path (anticlockwise from a normal that points right of it).
+    EXPECT_NEAR(throw_angle(object.velocity, normal), std::min(sliding, sticking), 1e-12)
+        << "cut " << cut;
+    // Both balls turn the same way (friction on each surface), and momentum is kept.
+    EXPECT_NEAR(cue.velocity.x + object.velocity.x, 1.0, 1e-15);
+    EXPECT_NEAR(cue.velocity.y + object.velocity.y, 0.0, 1e-15);
+    EXPECT_EQ(cue.twist, object.twist);
+  }
+}
+
+TEST(TableMotion, AHeadOnHitWithoutSpinExchangesVelocitiesAndSpinsNothing) {
+  TableBall cue = ball({2.0, 0.0});
+  TableBall object = ball({});
+  collide_on_table(cue, object, {1.0, 0.0}, 1.0, 0.06);
+  EXPECT_EQ(cue.velocity, (Vec2{}));
+  EXPECT_EQ(object.velocity, (Vec2{2.0, 0.0}));
+  EXPECT_EQ(object.spin, (Vec2{}));
+  EXPECT_EQ(object.twist, 0.0);
+}
+
+TEST(TableMotion, RandomBallCollisionsKeepMomentumAndNeverMakeEnergy) {
+  std::mt19937_64 random(13);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 2000; ++k) {
+    TableBall a = ball({3.0 * unit(random), 3.0 * unit(random)},
+                       {100.0 * unit(random), 100.0 * unit(random)}, 50.0 * unit(random));
+    TableBall b = ball({unit(random), unit(random)}, {20.0 * unit(random), 20.0 * unit(random)},
+                       10.0 * unit(random));
+    const double angle = 3.2 * unit(random);
+    const Vec2 normal{std::cos(angle), std::sin(angle)};
+    const Vec2 momentum = a.velocity + b.velocity;
+    const double before = energy(a) + energy(b);
+    const double e = 0.9 + 0.1 * unit(random);
+    const bool approaching = dot(a.velocity - b.velocity, normal) > 0.0;
+    collide_on_table(a, b, normal, e, 0.06);
+    EXPECT_NEAR((a.velocity + b.velocity).x, momentum.x, 1e-12) << "pair " << k;
+    EXPECT_NEAR((a.velocity + b.velocity).y, momentum.y, 1e-12) << "pair " << k;
+    EXPECT_LE(energy(a) + energy(b), before * (1.0 + 1e-12)) << "pair " << k;
+    // After an approach they part (or move together) along the normal.
+    if (approaching) {
+      EXPECT_LE(dot(a.velocity - b.velocity, normal), 1e-12) << "pair " << k;
+    }
+  }
+}
+
 TEST(TableMotion, RandomShotsKeepTheContactMomentumLoseEnergyAndPassThroughEachState) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

@@ -230,8 +230,15 @@ RigidContact advance(const Ball& ball, const Motion& motion, const RigidMotion& 
                      const Finish& finish) {
   RigidContact out;
   const Motion relative{motion.velocity - rigid.velocity, motion.acceleration, motion.growth};
-  const Impact reach = time_of_impact_ball_ball(ball, relative, Ball{rigid.pivot, envelope},
-                                                Motion{{}, {}}, horizon);
+  // (An envelope of radius 0 — a point at the pivot, or one the rounding of huge coordinates puts
+  // there — is given the least positive radius; one that is not finite rejects nothing.)
+  Impact reach;
+  reach.overlapping = true;
+  if (std::isfinite(envelope)) {
+    const double radius = std::max(envelope * (1.0 + 0x1p-30), std::numeric_limits<double>::min());
+    reach = time_of_impact_ball_ball(ball, relative, Ball{rigid.pivot, radius}, Motion{{}, {}},
+                                     horizon);
+  }
   if (!reach.hit && !reach.overlapping) {
     out.checked = horizon;
     return out;

@@ -74,6 +74,17 @@ TEST(RigidSweep, ATurningWallThatNeverReachesTheBallReportsNoContact) {
   EXPECT_EQ(contact.checked, 100.0);
 }
 
+TEST(RigidSweep, APointTurningAboutItselfIsAnEnvelopeOfNoSize) {
+  // A zero-length segment at the pivot: its envelope has radius 0, which the search must take
+  // (it once passed it to a query that refuses a radius of 0).
+  const Ball ball{{3.0, 0.0}, 0.5};
+  const RigidMotion turning{{1.0, 0.0}, 4.0, {0.0, 0.0}};
+  const RigidContact contact =
+      rigid_ball_segment(ball, Motion{{}, {}}, {{0.0, 0.0}, {0.0, 0.0}}, turning, 10.0);
+  ASSERT_TRUE(contact.impact.hit);
+  EXPECT_NEAR(contact.impact.t, 2.5, 1e-9);  // the point, moving at 1, reaches the ball's edge
+}
+
 TEST(RigidSweep, AWallThatOnlyTranslatesUsesTheRelativeClosedForm) {
   // A horizontal segment rising at 2 towards a ball falling from rest under gravity −1: the gap
   // 3 − 0.5 closes when 2t + t²/2 = 2.5, t = −2 + √9 = 1.

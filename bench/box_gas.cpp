@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <sstream>
 
 namespace carom::bench {
 
@@ -28,6 +29,17 @@ std::unique_ptr<World> make_box_gas(std::uint64_t n, double eta, bool gravity) {
   }
   world->set_contact_recording(false);
   return world;
+}
+
+std::unique_ptr<World> equilibrated_gas_copy() {
+  static const std::unique_ptr<World> base = [] {
+    std::unique_ptr<World> gas = make_box_gas(kEquilibratedGasBalls, 0.3, false);
+    gas->run_collisions(2 * kEquilibratedGasBalls);
+    return gas;
+  }();
+  std::stringstream bytes;
+  base->save(bytes);
+  return std::make_unique<World>(World::load(bytes));
 }
 
 }  // namespace carom::bench

@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <sstream>
 
 #include "box_gas.hpp"
 #include "carom/world.hpp"
@@ -15,22 +14,15 @@
 namespace carom::bench {
 namespace {
 
-constexpr std::uint64_t kMovingWallGasBalls = 10'000;
+constexpr std::uint64_t kMovingWallGasBalls = kEquilibratedGasBalls;
 
-// walls: 0 none, 1 turning bars, 2 translating paddles. A fresh copy (by save and load) of one
-// equilibrated gas for each; the walls placed where no ball is (balls in their way are removed).
+// walls: 0 none, 1 turning bars, 2 translating paddles, each on a fresh copy of the equilibrated
+// gas; the walls placed where no ball is (balls in their way are removed).
 World* moving_wall_gas(std::int64_t walls) {
-  static std::unique_ptr<World> base;
   static std::int64_t cached_kind = -1;
   static std::unique_ptr<World> cached;
   if (cached && cached_kind == walls) return cached.get();
-  if (!base) {
-    base = make_box_gas(kMovingWallGasBalls, 0.3, false);
-    base->run_collisions(2 * kMovingWallGasBalls);
-  }
-  std::stringstream bytes;
-  base->save(bytes);
-  cached = std::make_unique<World>(World::load(bytes));
+  cached = equilibrated_gas_copy();
   const double side = cached->def().upper.x;
   if (walls != 0) {
     for (int k = 0; k < 4; ++k) {

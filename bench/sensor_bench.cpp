@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <sstream>
 
 #include "box_gas.hpp"
 #include "carom/world.hpp"
@@ -15,22 +14,14 @@
 namespace carom::bench {
 namespace {
 
-constexpr std::uint64_t kSensorGasBalls = 10'000;
+constexpr std::uint64_t kSensorGasBalls = kEquilibratedGasBalls;
 
-// sensors: 0 none, 1 the lines, 2 the discs. A fresh copy (by save and load) of one
-// equilibrated gas for each, so that the three start alike.
+// sensors: 0 none, 1 the lines, 2 the discs, each on a fresh copy of the equilibrated gas.
 World* sensor_gas(std::int64_t sensors) {
-  static std::unique_ptr<World> base;
   static std::int64_t cached_kind = -1;
   static std::unique_ptr<World> cached;
   if (cached && cached_kind == sensors) return cached.get();
-  if (!base) {
-    base = make_box_gas(kSensorGasBalls, 0.3, false);
-    base->run_collisions(2 * kSensorGasBalls);
-  }
-  std::stringstream bytes;
-  base->save(bytes);
-  cached = std::make_unique<World>(World::load(bytes));
+  cached = equilibrated_gas_copy();
   const double side = cached->def().upper.x;
   constexpr int kLines = 10;
   constexpr int kDiscs = 20;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "ball_def.hpp"
 #include "carom/error.hpp"
 #include "carom/filter.hpp"
 #include "carom/world.hpp"
@@ -19,13 +20,7 @@ namespace {
 
 CollisionFilter only(std::uint64_t category) { return {category, category, 0}; }
 
-BallDef ball(Vec2 position, Vec2 velocity, double radius = 0.5) {
-  BallDef def;
-  def.position = position;
-  def.velocity = velocity;
-  def.radius = radius;
-  return def;
-}
+using testing::ball_def;
 
 // A box gas of two kinds, even and odd, with the given filter for each kind.
 World two_kinds(const CollisionFilter& even, const CollisionFilter& odd, bool with_odd = true) {
@@ -36,7 +31,7 @@ World two_kinds(const CollisionFilter& even, const CollisionFilter& odd, bool wi
   for (int row = 0; row < 14; ++row) {
     for (int column = 0; column < 14; ++column, ++k) {
       const BallDef def =
-          ball({1.5 + column * 2.7, 1.5 + row * 2.7}, {speed(engine), speed(engine)});
+          ball_def({1.5 + column * 2.7, 1.5 + row * 2.7}, {speed(engine), speed(engine)});
       if (k % 2 == 0) {
         world.add_ball(def, even);
       } else if (with_odd) {
@@ -101,8 +96,8 @@ TEST(WorldFilter, GroupsOverrideTheBits) {
   EXPECT_FALSE(should_collide({1, 2, 0}, {1, ~0ULL, 0}));        // a's mask misses b
   // In a world: two balls of one negative group head-on pass through each other.
   World world;
-  const BallId a = world.add_ball(ball({0.0, 0.0}, {1.0, 0.0}), {1, ~0ULL, -1});
-  const BallId b = world.add_ball(ball({5.0, 0.0}, {-1.0, 0.0}), {1, ~0ULL, -1});
+  const BallId a = world.add_ball(ball_def({0.0, 0.0}, {1.0, 0.0}), {1, ~0ULL, -1});
+  const BallId b = world.add_ball(ball_def({5.0, 0.0}, {-1.0, 0.0}), {1, ~0ULL, -1});
   world.run_until(10.0);
   EXPECT_EQ(world.collision_count(), 0u);
   EXPECT_EQ(world.position(a), (Vec2{10.0, 0.0}));
@@ -111,9 +106,9 @@ TEST(WorldFilter, GroupsOverrideTheBits) {
 
 TEST(WorldFilter, ABallPlacedOverlappingWhatItPassesThroughIsAccepted) {
   World world;
-  world.add_ball(ball({0.0, 0.0}, {}), only(1));
-  EXPECT_NO_THROW(world.add_ball(ball({0.3, 0.0}, {}), only(2)));
-  EXPECT_THROW(world.add_ball(ball({0.0, 0.3}, {}), only(1)), InvalidArgument);
+  world.add_ball(ball_def({0.0, 0.0}, {}), only(1));
+  EXPECT_NO_THROW(world.add_ball(ball_def({0.3, 0.0}, {}), only(2)));
+  EXPECT_THROW(world.add_ball(ball_def({0.0, 0.3}, {}), only(1)), InvalidArgument);
   EXPECT_EQ(world.audit(), std::nullopt);
 }
 
@@ -121,8 +116,8 @@ TEST(WorldFilter, AWallLetsThroughWhatItsFilterDoesNotMeet) {
   World world;
   const WallId gate = world.add_segment({{5.0, -10.0}, {5.0, 10.0}});
   world.set_wall_filter(gate, only(2));
-  const BallId ghost = world.add_ball(ball({0.0, 0.0}, {1.0, 0.0}), only(1));
-  const BallId solid = world.add_ball(ball({0.0, 3.0}, {1.0, 0.0}), {1 | 2, ~0ULL, 0});
+  const BallId ghost = world.add_ball(ball_def({0.0, 0.0}, {1.0, 0.0}), only(1));
+  const BallId solid = world.add_ball(ball_def({0.0, 3.0}, {1.0, 0.0}), {1 | 2, ~0ULL, 0});
   world.run_until(10.0);
   EXPECT_EQ(world.position(ghost), (Vec2{10.0, 0.0}));  // straight through
   EXPECT_LT(world.position(solid).x, 5.0);              // bounced back
@@ -138,8 +133,8 @@ TEST(WorldFilter, AFilterChangedBetweenStepsTakesEffectAtOnce) {
   // meet the other, whichever predicted it.
   for (const bool change_a : {true, false}) {
     World world;
-    const BallId a = world.add_ball(ball({0.0, 0.0}, {1.0, 0.0}));
-    const BallId b = world.add_ball(ball({4.0, 0.0}, {-1.0, 0.0}));
+    const BallId a = world.add_ball(ball_def({0.0, 0.0}, {1.0, 0.0}));
+    const BallId b = world.add_ball(ball_def({4.0, 0.0}, {-1.0, 0.0}));
     world.step(0.5);  // predicted: they meet at t = 1.5
     world.set_filter(change_a ? a : b, only(2));
     world.run_until(5.0);
@@ -182,9 +177,11 @@ TEST(WorldFilter, UnderGravityABallFallsThroughWhatItDoesNotMeetAndRestsOnWhatIt
   def.gravity = {0.0, -9.81};
   World world(def);
   world.set_wall_filter(world.add_segment({{0.0, 10.0}, {10.0, 10.0}}), only(2));  // a shelf
-  const BallId below = world.add_ball(ball({5.0, 0.5}, {}), {1, 1, -1});   // its group: never meet
-  const BallId ghost = world.add_ball(ball({5.0, 15.0}, {}), {1, 1, -1});  // meets the floor only
-  const BallId solid = world.add_ball(ball({2.0, 15.0}, {}), {2, ~0ULL, 0});
+  const BallId below =
+      world.add_ball(ball_def({5.0, 0.5}, {}), {1, 1, -1});  // its group: never meet
+  const BallId ghost =
+      world.add_ball(ball_def({5.0, 15.0}, {}), {1, 1, -1});  // meets the floor only
+  const BallId solid = world.add_ball(ball_def({2.0, 15.0}, {}), {2, ~0ULL, 0});
   world.run_until(20.0);
   EXPECT_EQ(world.audit(), std::nullopt);
   EXPECT_NEAR(world.position(solid).y, 10.5, 1e-3);  // on the shelf
@@ -195,8 +192,8 @@ TEST(WorldFilter, UnderGravityABallFallsThroughWhatItDoesNotMeetAndRestsOnWhatIt
 
 TEST(WorldFilter, QueriesSeeTheCategoriesOfTheirMask) {
   World world;
-  const BallId one = world.add_ball(ball({5.0, 0.0}, {}), only(1));
-  const BallId two = world.add_ball(ball({10.0, 0.0}, {}), only(2));
+  const BallId one = world.add_ball(ball_def({5.0, 0.0}, {}), only(1));
+  const BallId two = world.add_ball(ball_def({10.0, 0.0}, {}), only(2));
   QueryFilter twos;
   twos.mask = 2;
   EXPECT_EQ(world.cast_ray({0.0, 0.0}, {20.0, 0.0}).ball, one);

@@ -12,19 +12,14 @@
 #include <variant>
 #include <vector>
 
+#include "ball_def.hpp"
 #include "carom/error.hpp"
 #include "carom/world.hpp"
 
 namespace carom::moving_wall_tests {
 namespace {
 
-BallDef ball_def(Vec2 position, Vec2 velocity, double radius = 0.5) {
-  BallDef def;
-  def.position = position;
-  def.velocity = velocity;
-  def.radius = radius;
-  return def;
-}
+using testing::ball_def;
 
 // The tests' own carrying of a point by a motion given at time 0, for t (clamped to its
 // duration).

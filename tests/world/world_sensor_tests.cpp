@@ -13,19 +13,14 @@
 #include <variant>
 #include <vector>
 
+#include "ball_def.hpp"
 #include "carom/error.hpp"
 #include "carom/world.hpp"
 
 namespace carom::sensor_tests {
 namespace {
 
-BallDef ball_def(Vec2 position, Vec2 velocity, double radius = 0.5) {
-  BallDef def;
-  def.position = position;
-  def.velocity = velocity;
-  def.radius = radius;
-  return def;
-}
+using testing::ball_def;
 
 std::vector<SensorEvent> events_of(const World& world) {
   return {world.sensor_events().begin(), world.sensor_events().end()};

@@ -30,6 +30,7 @@
 #include "carom/handles.hpp"
 #include "carom/sensor.hpp"
 #include "carom/shapes.hpp"
+#include "carom/table.hpp"
 #include "carom/vec2.hpp"
 #include "carom/wall_motion.hpp"
 #include "carom/world_query.hpp"
@@ -75,6 +76,11 @@ struct WorldDef {
   // 0, the default, keeps radii fixed and every result what it is without the field. Changed
   // between steps by set_growth_rate. Not together with gravity.
   double growth_rate = 0.0;
+  // A billiards table (carom/table.hpp; docs/pool.md): the balls slide, roll and spin on a cloth
+  // under its friction, meet with throw, and every wall is a cushion. Unset, the default: balls
+  // have no spin and every result is what it is without the field. Not together with gravity or
+  // growth; moving walls are refused on a table.
+  std::optional<Table> table{};
 };
 
 struct BallDef {
@@ -86,6 +92,8 @@ struct BallDef {
   // (a ball of putty does not bounce off a rubber ball); a ball and a wall with the ball's.
   std::optional<double> restitution;
   std::uint64_t user_data = 0;
+  // On a table, the ball's angular velocity (carom/table.hpp); without one it must stay zero.
+  Spin spin{};
 };
 
 enum class ContactKind : std::uint8_t { ball_ball, ball_wall };
@@ -278,6 +286,9 @@ class World {
   // removed ball leaves its sensors without exits.
   [[nodiscard]] std::span<const SensorEvent> sensor_events() const noexcept;
   [[nodiscard]] bool contact_recording() const noexcept;
+  // On a table, the balls' changes of motion state during the last run (slide to roll, roll to
+  // rest, and those a contact makes), in the order they happened; recorded while contacts are.
+  [[nodiscard]] std::span<const MotionEvent> motion_events() const noexcept;
 
   // ---- queries, at the world's current time ----
   [[nodiscard]] double time() const noexcept;
@@ -296,6 +307,21 @@ class World {
   [[nodiscard]] double potential_energy() const noexcept;
   [[nodiscard]] Vec2 momentum() const noexcept;                  // of movable balls
   [[nodiscard]] std::uint64_t collision_count() const noexcept;  // since creation, all kinds
+  // Whether nothing will ever move again by itself: every movable ball still (on a table, every
+  // ball stationary, spin included) and no gravity to start one falling.
+  [[nodiscard]] bool at_rest() const noexcept;
+
+  // ---- the table (carom/table.hpp; docs/pool.md): refused without WorldDef::table ----
+  // A ball's angular velocity at the world's time.
+  [[nodiscard]] Spin spin(BallId id) const;
+  // A ball's motion state at the world's time (an immovable ball is stationary: friction does
+  // not act on what nothing moves).
+  [[nodiscard]] MotionState motion_state(BallId id) const;
+  // Sets a movable ball's angular velocity from now, keeping its place and velocity.
+  void set_spin(BallId id, Spin spin);
+  // Strikes a movable ball with the cue: the strike's velocity and spin (those it gives a ball at
+  // rest) are added to the ball's.
+  void strike(BallId id, const CueStrike& cue);
 
   // ---- changing the world between steps ----
   // Sets WorldDef::gravity (finite) from the world's time on; every ball keeps its place and

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "carom/table.hpp"
 #include "carom/vec2.hpp"
 
 namespace carom::detail {
@@ -19,7 +20,7 @@ struct Cloth {
   double spinning = 0.044;  // μsp: spin about the vertical axis
 };
 
-enum class TableState : std::uint8_t { sliding, rolling, spinning, stationary };
+using TableState = MotionState;
 
 // A ball's state on the table: its centre's velocity and its angular velocity (x and y in the
 // table's plane, z about the vertical, counter-clockwise seen from above).
@@ -28,6 +29,7 @@ struct TableBall {
   Vec2 spin;           // ωx, ωy
   double twist = 0.0;  // ωz ("English")
   double radius = 0.0;
+  double mass = 1.0;  // (or kImmovable: collisions read it)
 };
 
 // The velocity of the ball's contact point with the cloth: v + ω × (0, 0, −R).
@@ -52,31 +54,62 @@ struct TableStep {
 // The acceleration of the centre in the present state (constant within it).
 [[nodiscard]] Vec2 table_acceleration(const TableBall& ball, const Cloth& cloth);
 
-// A cue's strike: the cue (mass `cue_mass`) moving at `speed` along `direction` (an angle in the
-// table's plane, radians) and tilted `elevation` above the table, its tip meeting the ball
-// `side` to the right of the line through the centre and `height` above it, both measured across
-// the cue as the player sees the ball (side² + height² < R²), bouncing with `restitution`.
-struct CueStrike {
-  double speed = 0.0;
-  double direction = 0.0;
-  double elevation = 0.0;
-  double side = 0.0;
-  double height = 0.0;
-  double cue_mass = 0.54;
-  double restitution = 1.0;
+// A state as the world keeps it from the moment it begins: which, the centre's acceleration in
+// it, and how long it lasts. Fixed for the state's whole length, so that the rounding of the
+// values in between never changes what the ball does.
+struct StateMotion {
+  TableState state = TableState::stationary;
+  Vec2 acceleration;
+  double duration = 0.0;  // infinite when stationary
 };
+[[nodiscard]] StateMotion state_motion(const TableBall& ball, const Cloth& cloth);
+
+// The ball `t` into a state that began as `ball` (0 <= t <= motion.duration): its velocity
+// v + a·t, its spin, its twist. The centre's displacement is v·t + ½·a·t², as the world's.
+[[nodiscard]] TableBall advance_in_state(const TableBall& ball, const StateMotion& motion,
+                                         const Cloth& cloth, double t);
+// The ball at the end of that state, exactly: a slide ends with the rolling spin, a roll with
+// the ball still, a spin with no twist.
+[[nodiscard]] TableBall end_of_state(const TableBall& ball, const StateMotion& motion,
+                                     const Cloth& cloth);
 
 // The ball at rest struck so (mass `mass`, radius `radius`): one impulse along the cue through
 // the tip's point of contact (no tip friction, no squirt), the table taking its downward part (no
 // jump). Derivation: docs/derivation.md, "A ball on a cloth".
 [[nodiscard]] TableBall strike(const CueStrike& cue, double mass, double radius);
 
-// Two equal balls on the table meeting, `normal` the unit vector from a's centre to b's: the
-// normal impulse of restitution `restitution` through the centres, and the friction of the balls'
-// surfaces (coefficient `friction`) against their slip at the contact point, which throws the
-// struck ball off the line of centres and changes both spins; the friction stops at sticking.
-// Vertical velocities are not kept (the balls stay on the table). Derivation: docs/derivation.md,
+// Two balls on the table meeting, `normal` the unit vector from a's centre to b's (masses and
+// radii their own; an immovable one, mass kImmovable, keeps its motion): the normal impulse of
+// restitution `restitution` through the centres, and the friction of the balls' surfaces
+// (coefficient `friction`) against their slip at the contact point, which throws the struck
+// ball off the line of centres and changes both spins; the friction stops at sticking.
+// Vertical velocities are not kept (the balls stay on the table). The normal impulse is
+// returned. Derivation: docs/derivation.md, "A ball on a cloth".
+double collide_on_table(TableBall& a, TableBall& b, Vec2 normal, double restitution,
+                        double friction);
+
+// A slow contact that friction presses together (docs/derivation.md, "A ball on a cloth"): each
+// movable ball's slip is taken by the cloth's sticking impulse (it rolls, as at the end of a
+// slide), then the two roll on at their common velocity (the momentum-weighted mean; an
+// immovable ball's own), so that nothing presses them together any more. Energy only falls.
+void roll_together(TableBall& a, TableBall& b);
+// The same for a ball pressed into a cushion (`normal` from the centre towards it): it rolls,
+// and its velocity into the cushion is taken.
+void roll_along(TableBall& ball, Vec2 normal);
+
+// A cushion: its nose's height as a share of the ball's diameter, its restitution and friction.
+struct Cushion {
+  double height = 0.635;
+  double restitution = 0.85;
+  double friction = 0.2;
+};
+
+// A ball meeting a cushion, `normal` the unit vector in the table's plane from its centre
+// towards the cushion: Han's model (2005), the contact on the nose above the ball's equator,
+// one impulse of normal restitution and Coulomb friction against the contact point's slip
+// (stopping at sticking), the table taking its vertical part. Returns the impulse's part along
+// `normal` in the table's plane (its size, over the mass). Derivation: docs/derivation.md,
 // "A ball on a cloth".
-void collide_on_table(TableBall& a, TableBall& b, Vec2 normal, double restitution, double friction);
+double cushion_bounce(TableBall& ball, Vec2 normal, const Cushion& cushion);
 
 }  // namespace carom::detail

@@ -143,9 +143,14 @@ SceneWorld make_world(const Scene& scene) {
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const SceneBall& b = balls[i];
     try {
-      const BallId id = sw.world.add_ball(
-          {b.position, b.velocity, b.radius, b.mass, b.restitution, static_cast<std::uint64_t>(i)},
-          b.filter);
+      const BallId id = sw.world.add_ball({b.position,
+                                           b.velocity,
+                                           b.radius,
+                                           b.mass,
+                                           b.restitution,
+                                           static_cast<std::uint64_t>(i),
+                                           {}},
+                                          b.filter);
       sw.balls.push_back(id);
       if (b.name) sw.by_name[*b.name] = id;
     } catch (const InvalidArgument& error) {

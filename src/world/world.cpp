@@ -52,6 +52,29 @@ void validate_ball_def(const char* function, const BallDef& def) {
   detail::require_positive(function, "def.radius", def.radius);
   detail::require_mass(function, "def.mass", def.mass);
   if (def.restitution) detail::require_restitution(function, "def.restitution", *def.restitution);
+  detail::require_finite(function, "def.spin.x", def.spin.x);
+  detail::require_finite(function, "def.spin.y", def.spin.y);
+  detail::require_finite(function, "def.spin.z", def.spin.z);
+}
+
+void validate_table(const char* function, const Table& table) {
+  detail::require_finite(function, "def.table.g", table.g);
+  detail::require_positive(function, "def.table.g", table.g);
+  const std::pair<const char*, double> frictions[] = {
+      {"def.table.sliding_friction", table.sliding_friction},
+      {"def.table.rolling_friction", table.rolling_friction},
+      {"def.table.spinning_friction", table.spinning_friction},
+      {"def.table.ball_friction", table.ball_friction},
+      {"def.table.cushion_friction", table.cushion_friction}};
+  for (const auto& [name, value] : frictions) {
+    detail::require_finite(function, name, value);
+    detail::require_non_negative(function, name, value);
+  }
+  detail::require_that(table.cushion_height >= 0.5 && table.cushion_height < 1.0, function,
+                       "def.table.cushion_height", table.cushion_height,
+                       "must lie in [0.5, 1): a share of the ball's diameter, at or above its "
+                       "equator and below its top");
+  detail::require_restitution(function, "def.table.cushion_restitution", table.cushion_restitution);
 }
 
 }  // namespace
@@ -138,11 +161,22 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
     refuse(kFunction, "def.growth_rate", carom::number_text(def.growth_rate),
            "must be 0 while def.gravity is set: balls grow or fall, not both");
   }
+  if (def.table) {
+    validate_table(kFunction, *def.table);
+    if (def.gravity != Vec2{} || def.growth_rate != 0.0) {
+      refuse(
+          kFunction, "def.table", "set",
+          "cannot go with def.gravity or def.growth_rate: a table's balls neither fall nor grow");
+    }
+  }
   impl_->def = def;
   impl_->gravity_on = def.gravity != Vec2{};
   impl_->growth_on = def.growth_rate != 0.0;
   impl_->growth_relative = def.growth_rate;
-  impl_->general_motion = impl_->gravity_on || impl_->growth_on;
+  impl_->table_on = def.table.has_value();
+  impl_->accelerated = impl_->gravity_on || impl_->table_on;
+  impl_->general_motion = impl_->gravity_on || impl_->growth_on || impl_->table_on;
+  if (impl_->table_on) impl_->use_table();
   impl_->periodic_cell = PeriodicCell(def.lower, def.upper);
   if (def.boundary == Boundary::box) {
     add_box(def.lower, def.upper);
@@ -203,6 +237,17 @@ BallId World::add_ball(const BallDef& def, const CollisionFilter& ball_filter) {
   if (w.gravity_on) {
     w.carriages.resize(w.balls.size());
     w.carriages[slot] = w.free_carriage();
+  }
+  if (w.table_on) {
+    w.table_slots.resize(w.balls.size());
+    w.table_slots[slot] = detail::TableSlot{};
+    detail::TableBall state = w.table_ball(slot);
+    state.spin = {def.spin.x, def.spin.y};
+    state.twist = def.spin.z;
+    w.set_on_table(slot, state, w.time, false);
+  } else if (def.spin != Spin{}) {
+    refuse(kFunction, "def.spin", detail::vector_text({def.spin.x, def.spin.y}),
+           "must be zero in a world without a table (WorldDef::table)");
   }
   ++b.version;
   w.largest_radius = std::max(w.largest_radius, def.radius);
@@ -352,12 +397,101 @@ std::vector<BallId> World::balls_in_sensor(WallId id) const {
 
 std::span<const SensorEvent> World::sensor_events() const noexcept { return impl_->sensor_events; }
 
+std::span<const MotionEvent> World::motion_events() const noexcept { return impl_->motion_events; }
+
+bool World::at_rest() const noexcept {
+  const Impl& w = *impl_;
+  for (std::uint32_t i = 0; i < w.balls.size(); ++i) {
+    if (!w.balls[i].alive() || !w.movable(i)) continue;
+    if (w.velocity_at(i, w.time) != Vec2{}) return false;
+    if (w.gravity_on && w.carriages[i].state != detail::Carried::resting) return false;
+    if (w.table_on && w.table_slots[i].state != detail::TableState::stationary) return false;
+  }
+  return true;
+}
+
+Spin World::spin(BallId id) const {
+  const Impl& w = *impl_;
+  constexpr const char* kFunction = "World::spin";
+  w.require_table(kFunction);
+  const std::uint32_t slot = w.slot_of(kFunction, id);
+  const detail::TableSlot& table = w.table_slots[slot];
+  const detail::BallSlot& b = w.balls[slot];
+  const detail::TableBall now = detail::advance_in_state(
+      w.table_ball(slot), {table.state, table.acceleration, table.ends - b.local_time}, w.cloth,
+      w.time - b.local_time);
+  return {now.spin.x, now.spin.y, now.twist};
+}
+
+MotionState World::motion_state(BallId id) const {
+  const Impl& w = *impl_;
+  constexpr const char* kFunction = "World::motion_state";
+  w.require_table(kFunction);
+  return w.table_slots[w.slot_of(kFunction, id)].state;
+}
+
+void World::set_spin(BallId id, Spin spin) {
+  Impl& w = *impl_;
+  constexpr const char* kFunction = "World::set_spin";
+  w.require_table(kFunction);
+  const std::uint32_t slot = w.slot_of(kFunction, id);
+  detail::require_finite(kFunction, "spin.x", spin.x);
+  detail::require_finite(kFunction, "spin.y", spin.y);
+  detail::require_finite(kFunction, "spin.z", spin.z);
+  if (!w.movable(slot)) {
+    refuse(kFunction, "id", std::to_string(id.index), "is an immovable ball, which has no spin");
+  }
+  w.advance(slot, w.time);
+  detail::TableBall state = w.table_ball(slot);
+  state.spin = {spin.x, spin.y};
+  state.twist = spin.z;
+  w.set_on_table(slot, state, w.time, false);
+  ++w.balls[slot].version;
+  w.repredict_changed(slot);
+}
+
+void World::strike(BallId id, const CueStrike& cue) {
+  Impl& w = *impl_;
+  constexpr const char* kFunction = "World::strike";
+  w.require_table(kFunction);
+  const std::uint32_t slot = w.slot_of(kFunction, id);
+  if (!w.movable(slot)) {
+    refuse(kFunction, "id", std::to_string(id.index), "is an immovable ball: a cue cannot move it");
+  }
+  const std::pair<const char*, double> values[] = {
+      {"cue.speed", cue.speed}, {"cue.direction", cue.direction}, {"cue.elevation", cue.elevation},
+      {"cue.side", cue.side},   {"cue.height", cue.height},       {"cue.cue_mass", cue.cue_mass}};
+  for (const auto& [name, value] : values) detail::require_finite(kFunction, name, value);
+  detail::require_non_negative(kFunction, "cue.speed", cue.speed);
+  detail::require_positive(kFunction, "cue.cue_mass", cue.cue_mass);
+  detail::require_restitution(kFunction, "cue.restitution", cue.restitution);
+  detail::require_that(cue.elevation >= 0.0 && cue.elevation < 0.5 * std::numbers::pi, kFunction,
+                       "cue.elevation", cue.elevation, "must lie in [0, π/2) radians");
+  const double radius = w.radius_of(slot);
+  detail::require_that(cue.side * cue.side + cue.height * cue.height < radius * radius, kFunction,
+                       "cue.side", cue.side,
+                       "must meet the ball: side² + height² must stay below its radius²");
+  w.advance(slot, w.time);
+  const detail::TableBall hit = detail::strike(cue, w.species_of(slot).mass, radius);
+  detail::TableBall state = w.table_ball(slot);
+  state.velocity += hit.velocity;
+  state.spin += hit.spin;
+  state.twist += hit.twist;
+  w.set_on_table(slot, state, w.time, false);
+  ++w.balls[slot].version;
+  w.repredict_changed(slot);
+}
+
 void World::set_wall_motion(WallId wall, const WallMotion& motion) {
   constexpr const char* kFunction = "World::set_wall_motion";
   Impl& w = *impl_;
   detail::Wall& target = w.changeable_wall(kFunction, wall);
   if (target.sensor != detail::SensorRole::none) {
     refuse(kFunction, "wall", std::to_string(wall), "is a sensor: sensors stand still");
+  }
+  if (w.table_on && motion.moves()) {
+    refuse(kFunction, "wall", std::to_string(wall),
+           "is a table's cushion: walls on a table (WorldDef::table) stand still");
   }
   detail::require_finite(kFunction, "motion.velocity", motion.velocity);
   detail::require_finite(kFunction, "motion.angular_velocity", motion.angular_velocity);
@@ -423,6 +557,7 @@ std::uint64_t World::run_collisions(std::uint64_t count) {
   if (count == 0) {
     impl_->contacts.clear();
     impl_->sensor_events.clear();
+    impl_->motion_events.clear();
     impl_->stop_reason = StopReason::none;
     return 0;
   }
@@ -440,6 +575,7 @@ std::uint64_t World::run_collisions(std::uint64_t count, double time_limit) {
   if (count == 0) {
     impl_->contacts.clear();
     impl_->sensor_events.clear();
+    impl_->motion_events.clear();
     impl_->stop_reason = StopReason::none;
     return 0;
   }
@@ -546,11 +682,16 @@ void World::set_gravity(Vec2 gravity) {
            "must be zero while the balls grow (WorldDef::growth_rate): they grow or fall, not "
            "both");
   }
+  if (w.table_on && gravity != Vec2{}) {
+    refuse("World::set_gravity", "gravity", detail::vector_text(gravity),
+           "must be zero on a table (WorldDef::table): its balls roll on the cloth");
+  }
   // Every ball is brought to now under the old law, and predicted again under the new one.
   w.synchronize(w.time);
   w.def.gravity = gravity;
   w.gravity_on = gravity != Vec2{};
-  w.general_motion = w.gravity_on || w.growth_on;
+  w.accelerated = w.gravity_on || w.table_on;
+  w.general_motion = w.gravity_on || w.growth_on || w.table_on;
   w.reset_carriages();  // resting and sliding balls fall, and settle again under the new gravity
   w.events_valid = false;
 }
@@ -565,12 +706,16 @@ void World::set_growth_rate(double rate) {
     refuse(kFunction, "rate", carom::number_text(rate),
            "must be 0 while gravity is on (WorldDef::gravity): balls grow or fall, not both");
   }
+  if (rate != 0.0 && w.table_on) {
+    refuse(kFunction, "rate", carom::number_text(rate),
+           "must be 0 on a table (WorldDef::table): its balls keep their size");
+  }
   // Radii as they are now, then growing at the new rate from now; every ball predicted again.
   w.synchronize(w.time);
   w.settle_growth();
   w.def.growth_rate = rate;
   w.growth_on = rate != 0.0;
-  w.general_motion = w.gravity_on || w.growth_on;
+  w.general_motion = w.gravity_on || w.growth_on || w.table_on;
   w.growth_start = w.time;
   w.growth_relative = rate;
   w.plan_growth_regrid();
@@ -588,6 +733,10 @@ double World::set_temperature(double kT) {
   detail::require_finite(kFunction, "kT", kT);
   detail::require_positive(kFunction, "kT", kT);
   Impl& w = *impl_;
+  if (w.table_on) {
+    refuse(kFunction, "kT", carom::number_text(kT),
+           "is a gas's temperature, which a table's balls (slowed by the cloth) do not keep");
+  }
   // Every ball to now (its velocity of now under gravity), then sums in handle order, as
   // kinetic_energy does.
   w.synchronize(w.time);
@@ -642,10 +791,8 @@ void World::set_filter(BallId id, const CollisionFilter& filter) {
   w.infos[slot].filter = number;
   // Its pending events, and its neighbours' with it, were predicted under the old filter: a new
   // version makes theirs stale (re-predicted when they come up), and its own is predicted anew.
-  if (w.gravity_on) {
-    w.advance(slot, w.time);
-    w.disturb(slot);  // what rested on it may now fall through it
-  }
+  if (w.accelerated) w.advance(slot, w.time);
+  if (w.gravity_on) w.disturb(slot);  // what rested on it may now fall through it
   BallSlot& b = w.balls[slot];
   b.position = w.position_at(slot, w.time);
   b.local_time = w.time;
@@ -688,14 +835,17 @@ void World::set_velocity(BallId id, Vec2 velocity) {
   constexpr const char* kFunction = "World::set_velocity";
   const std::uint32_t slot = impl_->slot_of(kFunction, id);
   detail::require_finite(kFunction, "velocity", velocity);
-  if (impl_->gravity_on) {
-    impl_->advance(slot, impl_->time);
-    impl_->disturb(slot);  // it no longer rests, and what rested on it falls
-  }
+  if (impl_->accelerated) impl_->advance(slot, impl_->time);
+  if (impl_->gravity_on) impl_->disturb(slot);  // it no longer rests, and what rested on it falls
   BallSlot& b = impl_->balls[slot];
   b.position = impl_->position_at(slot, impl_->time);
   b.local_time = impl_->time;
   b.velocity = velocity;
+  if (impl_->table_on) {
+    detail::TableBall state = impl_->table_ball(slot);
+    state.velocity = velocity;
+    impl_->set_on_table(slot, state, impl_->time, false);
+  }
   ++b.version;
   impl_->repredict_changed(slot);
 }
@@ -789,7 +939,7 @@ Vec2 World::set_position(BallId id, Vec2 position, Placement placement) {
   Impl& w = *impl_;
   const std::uint32_t slot = w.slot_of(kFunction, id);
   detail::require_finite(kFunction, "position", position);
-  if (w.gravity_on) w.advance(slot, w.time);  // (the velocity too, re-based to now)
+  if (w.accelerated) w.advance(slot, w.time);  // (the velocity too, re-based to now)
   w.settle_growth();  // (the radii of now, which the sweep and the overlap test read)
   BallSlot& b = w.balls[slot];
   const Vec2 from = w.position_at(slot, w.time);

@@ -67,7 +67,7 @@ void World::Impl::cross_cell(std::uint32_t ball, std::uint32_t side, double t, b
   grid.erase(ball);
   grid.insert(ball, grid.index(cx, cy));
   if (general_motion) [[unlikely]] {
-    if (gravity_on) {
+    if (accelerated) {
       predict_under_gravity(ball);
     } else {
       predict_growing(ball, clear_behind && interior_before ? side : kWholeBlock);

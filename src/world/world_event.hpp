@@ -11,7 +11,9 @@ enum class EventKind : std::uint8_t {
   ball_ball = 0,      // two balls touch
   ball_wall = 1,      // a ball touches a wall
   cell_crossing = 2,  // a ball's centre leaves its grid cell (bookkeeping, no contact)
-  release = 3,        // under gravity, a sliding ball leaves its support (world_resting.cpp)
+  // A ball's motion changes by itself: under gravity a sliding ball leaves its support
+  // (world_resting.cpp), on a table its motion state ends (world_table.cpp).
+  motion_change = 3,
 };
 
 // The four sides a ball's centre can leave its cell through (the partner of a crossing).

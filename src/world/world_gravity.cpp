@@ -143,9 +143,15 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
                   carried->lower, carried->upper, 0, 0);
     if (off.t < exit.t) {
       best.time = time + off.t;
-      best.kind = EventKind::release;
+      best.kind = EventKind::motion_change;
       best.partner = 0;
     }
+  }
+  // On a table, the end of the ball's motion state (when it comes before the cell's exit).
+  if (table_on && table_slots[ball].ends < best.time) {
+    best.time = table_slots[ball].ends;
+    best.kind = EventKind::motion_change;
+    best.partner = 0;
   }
   // Contacts after the ball leaves its cell are found again from the next one.
   const auto horizon = [&] { return best.time < kInfinity ? best.time - time : kFarFuture; };
@@ -279,6 +285,7 @@ bool World::Impl::process_general(const Event& event) {
         predict(i);
         return false;
       }
+      if (table_on) return resolve_pair_on_table(i, j, event.time);
       return gravity_on ? resolve_pair_under_gravity(i, j, event.time)
                         : resolve_pair_under_growth(i, j, event.time);
     }
@@ -286,13 +293,18 @@ bool World::Impl::process_general(const Event& event) {
       if (event.partner_version == detail::kSensorEvent)
         return process_sensor(i, event.partner, event.time);
       if (event.partner_version != 0) return process_moving_wall(event);
+      if (table_on) return resolve_wall_on_table(i, event.partner, event.time);
       return gravity_on ? resolve_wall_under_gravity(i, event.partner, event.time)
                         : resolve_wall_under_growth(i, event.partner, event.time);
     case EventKind::cell_crossing:
       cross_cell(i, event.partner, event.time, event.partner_version == detail::kClearBehind);
       return false;
-    case EventKind::release:
-      // (Under gravity only.) A sliding ball past its support's end (or off a curved support's
+    case EventKind::motion_change:
+      if (table_on) {
+        process_motion_change(event);
+        return false;
+      }
+      // Under gravity, a sliding ball past its support's end (or off a curved support's
       // tangent): it falls.
       advance(i, event.time);
       disturb(i);

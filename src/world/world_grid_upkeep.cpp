@@ -203,6 +203,7 @@ void World::Impl::sort_by_cell() {
   renumber(new_slot);
   if (!last_contact_times.empty()) detail::move_to(last_contact_times, new_slot);
   if (!carriages.empty()) detail::move_to(carriages, new_slot);
+  if (!table_slots.empty()) detail::move_to(table_slots, new_slot);
   grid.relist();
   if (events_valid) {
     queue.use_handles(handle_of.data());

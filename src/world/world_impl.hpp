@@ -30,6 +30,7 @@
 #include "pair_batch.hpp"
 #include "save_format.hpp"
 #include "species.hpp"
+#include "table_slot.hpp"
 #include "wall.hpp"
 
 namespace carom {
@@ -117,8 +118,13 @@ struct World::Impl : detail::BallStore {
   bool gravity_on = false;
   // Whether def.growth_rate is not zero (balls grow: world_growth.cpp).
   bool growth_on = false;
-  // Whether a law beyond straight lines at fixed radii moves the balls (gravity or growth): only
-  // then does the general prediction (world_gravity.cpp) run.
+  // Whether def.table is set (balls slide, roll and spin on a cloth: world_table.cpp).
+  bool table_on = false;
+  // Whether balls move with accelerations (gravity, or a table's friction): only then do their
+  // places and velocities follow parabolas.
+  bool accelerated = false;
+  // Whether a law beyond straight lines at fixed radii moves the balls (gravity, growth or a
+  // table): only then does the general prediction (world_gravity.cpp) run.
   bool general_motion = false;
   // Under growth: the time from which radii grow (the species' radii are those at it), the rate
   // relative to those radii (def.growth_rate relative to the radii when it was set: the two
@@ -130,6 +136,12 @@ struct World::Impl : detail::BallStore {
   // By slot, how gravity carries each ball (carriage.hpp): sized with the slots while gravity is
   // on, empty otherwise.
   std::vector<detail::Carriage> carriages;
+  // On a table: the cloth, the cushions and the balls' friction from def.table; by slot, each
+  // ball's spin and motion state (sized with the slots); the state changes of the last run.
+  detail::Cloth cloth;
+  detail::Cushion cushion;
+  std::vector<detail::TableSlot> table_slots;
+  std::vector<MotionEvent> motion_events;
   // (jammed) The instant of the latest slow contact, the handles of the balls in slow contacts
   // at it, and how many jams at it let a ball slide on along its support rather than rest.
   double jam_time = -std::numeric_limits<double>::infinity();
@@ -159,7 +171,7 @@ struct World::Impl : detail::BallStore {
   // A ball's place and velocity at t (at or after its local time): on its straight line, or
   // under gravity on its parabola.
   [[nodiscard]] Vec2 position_at(std::uint32_t ball, double t) const {
-    if (gravity_on) [[unlikely]] {
+    if (accelerated) [[unlikely]] {
       const detail::BallSlot& b = balls[ball];
       const double dt = t - b.local_time;
       const Vec2 a = acceleration_of(ball);
@@ -171,13 +183,15 @@ struct World::Impl : detail::BallStore {
   }
   [[nodiscard]] Vec2 velocity_at(std::uint32_t ball, double t) const {
     const detail::BallSlot& b = balls[ball];
-    if (gravity_on) [[unlikely]]
+    if (accelerated) [[unlikely]]
       return b.velocity + acceleration_of(ball) * (t - b.local_time);
     return b.velocity;
   }
   // The acceleration a ball moves with: gravity for a movable ball, or its part along a support
-  // the ball slides on, or none for a ball at rest (docs/world.md, "Gravity").
+  // the ball slides on, or none for a ball at rest (docs/world.md, "Gravity"); on a table, the
+  // cloth's friction in the ball's state.
   [[nodiscard]] Vec2 acceleration_of(std::uint32_t ball) const {
+    if (table_on) return table_slots[ball].acceleration;
     return gravity_on && movable(ball) ? carriages[ball].acceleration : Vec2{};
   }
   [[nodiscard]] Motion motion_of(std::uint32_t ball) const {
@@ -302,6 +316,8 @@ struct World::Impl : detail::BallStore {
   void load_filters(detail::ByteReader& in);
   void load_sensors(detail::ByteReader& in);
   void load_wall_changes(detail::ByteReader& in);
+  void save_table(detail::ByteWriter& out) const;
+  void load_table(detail::ByteReader& in);
   [[nodiscard]] bool has_wall_changes() const {
     return std::any_of(walls.begin(), walls.end(),
                        [](const detail::Wall& wall) { return wall.moving || wall.removed; });
@@ -360,6 +376,25 @@ struct World::Impl : detail::BallStore {
   void regrid_for_growth(double t);
   bool resolve_pair_under_growth(std::uint32_t i, std::uint32_t j, double t);
   bool resolve_wall_under_growth(std::uint32_t i, std::uint32_t wall, double t);
+
+  // ---- the table (world_table.cpp; docs/engine.md, "The table") ----
+  // Sets def.table's derived state (the cloth, the cushions) and sizes the table slots.
+  void use_table();
+  // A ball's state on the table at its local time.
+  [[nodiscard]] detail::TableBall table_ball(std::uint32_t ball) const;
+  // Gives a ball at its local time t the velocity and spin of `state` and the motion state they
+  // make (an immovable ball stays stationary), recording a change of state where `record` (in a
+  // run) and contacts are recorded.
+  void set_on_table(std::uint32_t ball, const detail::TableBall& state, double t,
+                    bool record = true);
+  // advance's part on a table: the spin follows the state.
+  void advance_on_table(std::uint32_t ball, double t);
+  // A ball's motion state ends at its event: it begins the next.
+  void process_motion_change(const detail::Event& event);
+  bool resolve_pair_on_table(std::uint32_t i, std::uint32_t j, double t);
+  bool resolve_wall_on_table(std::uint32_t i, std::uint32_t wall, double t);
+  // The refusal of a table call (naming `function`) in a world without a table.
+  void require_table(const char* function) const;
 
   // ---- resting and sliding under gravity (world_resting.cpp; docs/engine.md, "Resting and
   // sliding") ----

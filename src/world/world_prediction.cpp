@@ -29,8 +29,12 @@ using namespace detail::tuning;  // NOLINT(google-build-using-namespace): the en
 // ---- prediction ---------------------------------------------------------------------------
 
 void World::Impl::advance(std::uint32_t ball, double t) {
-  if (gravity_on) [[unlikely]] {
-    advance_under_gravity(ball, t);
+  if (accelerated) [[unlikely]] {
+    if (table_on) {
+      advance_on_table(ball, t);
+    } else {
+      advance_under_gravity(ball, t);
+    }
     return;
   }
   BallSlot& b = balls[ball];
@@ -77,7 +81,7 @@ void World::Impl::repredict_changed(std::uint32_t ball) {
 // ball").
 void World::Impl::predict(std::uint32_t ball) {
   if (general_motion) [[unlikely]] {
-    if (gravity_on) {
+    if (accelerated) {
       predict_under_gravity(ball);
     } else {
       predict_growing(ball);

@@ -67,7 +67,7 @@ bool World::Impl::process(const Event& event) {
     case EventKind::cell_crossing:
       cross_cell(i, event.partner, event.time, event.partner_version == detail::kClearBehind);
       return false;
-    case EventKind::release:  // (under gravity only)
+    case EventKind::motion_change:  // (under gravity or on a table only)
       return false;
   }
   return false;

@@ -125,6 +125,7 @@ std::uint64_t World::Impl::run(const char* function, RunGoal goal, double end,
   } place_walls_at_end{*this};
   contacts.clear();
   sensor_events.clear();
+  motion_events.clear();
   stop_reason = StopReason::none;
   mover_met = false;
   if (!grid_valid || grid_too_coarse(live_count, kRunCoarseness)) rebuild_grid(Vec2{}, 0.0);

@@ -48,7 +48,10 @@ constexpr std::uint32_t kSensorsFlag = 0x200;
 // removed, and a moving wall's path (its rigid motion, start and end, and its shape at the start,
 // the arc's prepared frame included).
 constexpr std::uint32_t kWallChangesFlag = 0x400;
-constexpr std::uint32_t kFlags = kFiltersFlag | kSensorsFlag | kWallChangesFlag;
+// Added likewise: the world has a table, saved last: its definition, then each slot's spin,
+// twist and motion state (the state's acceleration and end as they were set when it began).
+constexpr std::uint32_t kTableFlag = 0x800;
+constexpr std::uint32_t kFlags = kFiltersFlag | kSensorsFlag | kWallChangesFlag | kTableFlag;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8 + 8;  // magic, version, size, checksum
 // Payloads are read in pieces of this size, so that a damaged size field cannot make load
 // allocate more than the stream really holds.
@@ -293,13 +296,31 @@ std::string World::Impl::save_payload() const {
       }
     }
   }
+  if (table_on) save_table(out);
   return out.bytes();
 }
 
+void World::Impl::save_table(detail::ByteWriter& out) const {
+  const Table& table = *def.table;
+  for (const double value : {table.g, table.sliding_friction, table.rolling_friction,
+                             table.spinning_friction, table.ball_friction, table.cushion_height,
+                             table.cushion_restitution, table.cushion_friction}) {
+    out.f64(value);
+  }
+  for (const std::uint32_t i : slot_of_handle) {
+    const detail::TableSlot& slot = table_slots[i];
+    out.vec2(slot.spin);
+    out.f64(slot.twist);
+    out.vec2(slot.acceleration);
+    out.f64(slot.ends);
+    out.u8(static_cast<std::uint8_t>(slot.state));
+  }
+}
+
 std::uint32_t World::Impl::save_version() const {
-  const std::uint32_t flags = (filters.active() ? kFiltersFlag : 0U) |
-                              (has_sensors() ? kSensorsFlag : 0U) |
-                              (has_wall_changes() ? kWallChangesFlag : 0U);
+  const std::uint32_t flags =
+      (filters.active() ? kFiltersFlag : 0U) | (has_sensors() ? kSensorsFlag : 0U) |
+      (has_wall_changes() ? kWallChangesFlag : 0U) | (table_on ? kTableFlag : 0U);
   if (gravity_on) return kGravityVersion | flags;
   return (growth_on ? kGrowthVersion : kVersion) | flags;
 }
@@ -367,7 +388,13 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
     }
     growth_on = true;
   }
-  general_motion = gravity_on || growth_on;
+  table_on = (flagged_version & kTableFlag) != 0;
+  if (table_on && (gravity_on || growth_on)) {
+    in.inconsistent("version", std::to_string(flagged_version),
+                    "a table goes with neither gravity nor growth");
+  }
+  accelerated = gravity_on || table_on;
+  general_motion = gravity_on || growth_on || table_on;
   if (def.boundary != Boundary::open && !(finite(def.lower) && finite(def.upper) &&
                                           def.upper.x > def.lower.x && def.upper.y > def.lower.y)) {
     in.inconsistent("def.upper", vector_text(def.upper),
@@ -532,7 +559,7 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
       event.partner_version = in.u32("event partner version");
       const std::uint32_t partners =
           kind == 0 ? slots : (kind == 1 ? wall_count : (kind == 2 ? 4 : 1));
-      if (kind > (gravity_on ? 3 : 2) || event.partner >= partners ||
+      if (kind > (accelerated ? 3 : 2) || event.partner >= partners ||
           (kind == 0 && event.partner == i) || std::isnan(event.time) ||
           event.time == -std::numeric_limits<double>::infinity()) {
         in.inconsistent("event of ball slot " + std::to_string(i), number_text(event.time),
@@ -545,6 +572,7 @@ void World::Impl::load_payload(ByteReader& in, std::uint32_t flagged_version) {
   if ((flagged_version & kFiltersFlag) != 0) load_filters(in);
   if ((flagged_version & kSensorsFlag) != 0) load_sensors(in);
   if ((flagged_version & kWallChangesFlag) != 0) load_wall_changes(in);
+  if (table_on) load_table(in);
   if (in.remaining() != 0) {
     in.inconsistent("payload", std::to_string(in.remaining()) + " bytes", "left over at the end");
   }
@@ -610,6 +638,44 @@ void World::Impl::load_sensors(ByteReader& in) {
 // The moving and removed walls' section: ascending ids of walls that may change (no side of a
 // box; a moving wall a segment or an arc that is no sensor), finite paths that start no later than
 // they end. Each moving wall's shape is then brought to the world's time, as it was when saved.
+// The table's section: its definition (validated as World's constructor does) and each slot's
+// spin and state, by handle.
+void World::Impl::load_table(ByteReader& in) {
+  Table table;
+  table.g = in.f64("table g");
+  table.sliding_friction = in.f64("table sliding friction");
+  table.rolling_friction = in.f64("table rolling friction");
+  table.spinning_friction = in.f64("table spinning friction");
+  table.ball_friction = in.f64("table ball friction");
+  table.cushion_height = in.f64("table cushion height");
+  table.cushion_restitution = in.f64("table cushion restitution");
+  table.cushion_friction = in.f64("table cushion friction");
+  try {
+    WorldDef check;
+    check.table = table;
+    const World validated(check);
+  } catch (const InvalidArgument& e) {
+    in.inconsistent(e.argument(), e.value(), e.requirement());
+  }
+  def.table = table;
+  use_table();
+  for (std::uint32_t i = 0; i < balls.size(); ++i) {
+    detail::TableSlot& slot = table_slots[i];
+    slot.spin = in.vec2("ball spin");
+    slot.twist = in.f64("ball twist");
+    slot.acceleration = in.vec2("ball table acceleration");
+    slot.ends = in.f64("ball state end");
+    const std::uint8_t state = in.u8("ball motion state");
+    if (!balls[i].alive()) continue;
+    if (state > static_cast<std::uint8_t>(detail::TableState::stationary) || !finite(slot.spin) ||
+        !std::isfinite(slot.twist) || !finite(slot.acceleration) || std::isnan(slot.ends)) {
+      in.inconsistent("table state of ball slot " + std::to_string(i), std::to_string(state),
+                      "a motion state (0 to 3) with finite spin and acceleration");
+    }
+    slot.state = static_cast<detail::TableState>(state);
+  }
+}
+
 void World::Impl::load_wall_changes(ByteReader& in) {
   const std::uint32_t count = in.u32("changed wall count");
   if (count > walls.size()) {

@@ -75,14 +75,14 @@ TEST(WorldScenario, NewtonsCradlePassesTheStrikeToTheLastBall) {
 // set this fraction of a diameter apart: far above rounding, far below anything visible.
 constexpr double kRackGap = 1e-12;
 
-struct Table {
+struct RackedTable {
   World world;
   std::vector<BallId> balls;  // the cue ball first
 };
 
-Table billiards_break(double cue_speed, double cue_offset) {
+RackedTable billiards_break(double cue_speed, double cue_offset) {
   constexpr double kRadius = 0.5;
-  Table table{World(WorldDef{Boundary::box, {0.0, 0.0}, {40.0, 20.0}}), {}};
+  RackedTable table{World(WorldDef{Boundary::box, {0.0, 0.0}, {40.0, 20.0}}), {}};
   table.balls.push_back(table.world.add_ball(ball_at({8.0, 10.0 + cue_offset}, {cue_speed, 0.0})));
   const double pitch = 2.0 * kRadius * (1.0 + kRackGap);
   for (int row = 0; row < 5; ++row) {
@@ -97,7 +97,7 @@ Table billiards_break(double cue_speed, double cue_offset) {
 TEST(WorldScenario, BilliardsBreakConservesEnergyAndMomentumAndNeverOverlaps) {
   constexpr double kCueSpeed = 60.0;
   // Off the rack's axis by a little: not symmetric, yet a dense cascade of near-ties.
-  Table table = billiards_break(kCueSpeed, 1e-3);
+  RackedTable table = billiards_break(kCueSpeed, 1e-3);
   World& world = table.world;
   const double energy = world.kinetic_energy();
   const Vec2 momentum = world.momentum();
@@ -129,7 +129,7 @@ TEST(WorldScenario, BilliardsBreakConservesEnergyAndMomentumAndNeverOverlaps) {
 
 TEST(WorldScenario, StraightOnBreakResolvesItsTiesWithoutOverlap) {
   // Exactly on the axis: the rack's mirror symmetry makes contacts tie in time.
-  Table table = billiards_break(60.0, 0.0);
+  RackedTable table = billiards_break(60.0, 0.0);
   for (int s = 0; s < 120; ++s) {
     table.world.step(kScenarioStep);
     const auto audit = table.world.audit();

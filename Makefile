@@ -95,17 +95,17 @@ run: run-deps
 	cmake --preset release >/dev/null
 	cmake --build --preset release --target carom_cli
 	mkdir -p $(RUN_DIR)
-	$(CAROM) run examples/billiards.json --until 10 --stats \
+	$(CAROM) run examples/billiards.json --every 0.1 --stats \
 	  --frames $(RUN_DIR)/billiards-frames.csv --events $(RUN_DIR)/billiards-events.jsonl \
 	  --save $(RUN_DIR)/billiards-end.json
 	$(CAROM) sweep --a 0,0,1 --va 6,2 --b 8,3,1.5 --vb -4,-1 --svg $(RUN_PICTURE) >/dev/null
 	echo
-	echo "The billiards break (examples/billiards.json), 10 s of it:"
+	echo "The billiards break (examples/billiards.json) until every ball rests:"
 	echo "  frames (positions, velocities every 0.1 s):  $(RUN_DIR)/billiards-frames.csv"
-	echo "  every contact, as JSON lines:                $(RUN_DIR)/billiards-events.jsonl"
+	echo "  every contact and change of motion, as JSON lines: $(RUN_DIR)/billiards-events.jsonl"
 	echo "  the end state, a scene to continue from:     $(RUN_DIR)/billiards-end.json"
 	echo "The tutorial's two balls, drawn:               $(RUN_PICTURE) (open it in a browser)"
-	$(CAROM) render examples/billiards.json --animate $(RUN_ANIMATION) --until 2.5 --trails 0.25
+	$(CAROM) render examples/billiards.json --animate $(RUN_ANIMATION) --until 8 --trails 0.25
 	echo "The billiards break, animated:                 $(RUN_ANIMATION) (open it in a browser)"
 	echo "More scenes in examples/; try: $(CAROM) run examples/periodic-gas.json --until 1 --stats"
 	echo "Install the tool, library and examples: cmake --install build/release --prefix ~/.local"

@@ -1,6 +1,6 @@
 """A billiards break, contact by contact.
 
-Builds a World from examples/billiards.json (15 racked balls, the cue ball at 6 m/s, cushions as
+Builds a World from examples/billiards-frictionless.json (15 racked balls, the cue ball at 6 m/s, cushions as
 segments, pockets as immovable balls), runs it with contact recording, and prints the first
 contacts of the break: when, what met what, the approach speed and the impulse. A pocket's
 contact ends a run (stop_reason "stop_condition"); the script takes the ball off the table and
@@ -20,7 +20,7 @@ import numpy as np  # noqa: E402
 
 import carom  # noqa: E402
 
-SCENE = pathlib.Path(__file__).resolve().parents[1] / "billiards.json"
+SCENE = pathlib.Path(__file__).resolve().parents[1] / "billiards-frictionless.json"
 BOX_WALLS = 4  # a box world's own walls are walls 0-3; the scene's cushions come after
 
 

@@ -27,6 +27,7 @@
 #include "carom/filter.hpp"
 #include "carom/sensor.hpp"
 #include "carom/shapes.hpp"
+#include "carom/table.hpp"
 #include "carom/vec2.hpp"
 #include "carom/world.hpp"
 
@@ -79,6 +80,7 @@ struct SceneBall {
   std::optional<double> restitution;  // in [0, 1]; unset: the world's
   std::optional<std::string> color;   // any CSS colour text ("#ff8800", "red"); unset: by speed
   CollisionFilter filter;             // which balls and walls it meets ("filter" in JSON)
+  Spin spin{};  // angular velocity, on a table only (world.table; carom/table.hpp)
 };
 
 struct ScenePolyline {
@@ -152,6 +154,14 @@ struct SceneGenerator {
 // multiples of it). Exactly one of the two is set. Growth pumps energy into a compression; this
 // takes it out. Steps at fixed multiples make a run resumed from a checkpoint repeat the one never
 // stopped.
+// A cue strike (World::strike, carom/table.hpp) on a table: the named ball struck when the scene
+// clock reads `time`. A ball potted before its shot is not struck.
+struct SceneShot {
+  std::string ball;   // a movable ball's name
+  double time = 0.0;  // scene time, >= the scene's time; shots in order of time
+  CueStrike cue;
+};
+
 struct SceneThermostat {
   double temperature = 1.0;  // kT, > 0
   std::optional<double> interval;
@@ -179,6 +189,7 @@ struct Scene {
   std::vector<SceneSensor> sensors;
   std::vector<SceneGenerator> generators;
   std::optional<SceneThermostat> thermostat;  // none: the runs keep the energy they have
+  std::vector<SceneShot> shots;               // on a table: the cue strikes still to come
 };
 
 // ---- reading and writing ----
@@ -222,6 +233,10 @@ struct SceneWorld {
   // run_scene_collisions, in order (world times; contacts_before is the event's place in the
   // call's `contacts` vector: the index of the contact after it).
   std::vector<SensorEvent> sensor_events{};
+  // On a table: the shots struck so far (scene.shots[shots_taken] comes next), and the balls'
+  // changes of motion state during the last run call, in order (world times).
+  std::size_t shots_taken = 0;
+  std::vector<MotionEvent> motion_events{};
 
   // The scene's clock now: start_time + world.time().
   [[nodiscard]] double time() const noexcept { return start_time + world.time(); }
@@ -251,6 +266,9 @@ struct PottedBall {
 // With a thermostat the runs stop at each of its steps (a multiple of its interval on the scene
 // clock, or of its collisions on the world's count, after the call's start), scale the
 // velocities, and go on; a step at the call's very end is taken before it returns.
+// On a table the runs strike each shot when the scene clock reaches its time (a shot due at the
+// call's start is struck first) and go on; run_scene_collisions waits through a world at rest for
+// the next shot, and otherwise stops there with no_more_contacts.
 double step_scene(SceneWorld& scene_world, double dt, std::vector<ContactEvent>* contacts = nullptr,
                   std::vector<PottedBall>* potted = nullptr);
 double run_scene_until(SceneWorld& scene_world, double time,
@@ -268,7 +286,8 @@ std::uint64_t run_scene_collisions(SceneWorld& scene_world, std::uint64_t count,
 
 // The world's state now as a scene to continue from: the same settings (gravity as it is now,
 // after any World::set_gravity), walls and pockets, the balls still in the world (positions and
-// velocities now, names, colours, restitution kept), no generators, and time = scene_world.time().
+// velocities now, names, colours, restitution kept; on a table spins now and the shots still to
+// come), no generators, and time = scene_world.time().
 [[nodiscard]] Scene capture_scene(const SceneWorld& scene_world);
 
 // ---- inspecting ----

@@ -29,6 +29,11 @@ struct Table {
   double cushion_height = 0.635;
   double cushion_restitution = 0.85;  // in [0, 1]
   double cushion_friction = 0.2;      // between ball and cushion, >= 0
+  // How long a contact lasts (about 0.2 ms between pool balls): a ball that met something less
+  // than this long ago bounces elastically, so that a rack of balls pressed together cannot
+  // collide inelastically without end. It is the world's collapse_time unless
+  // WorldDef::collapse_time is set (> 0). >= 0; 0 turns it off.
+  double contact_time = 2e-4;
 
   friend bool operator==(const Table&, const Table&) = default;
 };

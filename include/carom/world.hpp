@@ -50,7 +50,8 @@ struct WorldDef {
   double restitution = 1.0;  // for balls whose BallDef leaves it unset
   // Inelastic collapse prevention (the "TC model"): a ball that collided less than this time ago
   // bounces elastically, so that three or more inelastic balls cannot collide infinitely often in
-  // finite time. 0 turns it off. See docs/engine.md, "Response".
+  // finite time. 0 turns it off (on a table, 0 takes Table::contact_time). See docs/engine.md,
+  // "Response".
   double collapse_time = 0.0;
   // Side of the broad-phase grid's cells; 0 chooses it (at least the largest diameter; 1.25
   // diameters in a dilute world). A cell smaller than the largest diameter given here is raised

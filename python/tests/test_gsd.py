@@ -88,7 +88,7 @@ def test_read_gives_the_run_back(tmp_path):
 
 
 def test_potted_balls_leave_the_frames(tmp_path):
-    scene = carom.load_scene(EXAMPLES / "billiards.json")
+    scene = carom.load_scene(EXAMPLES / "billiards-frictionless.json")
     run = carom.run_scene(scene, until=3.0, frame_interval=1.0)
     assert run["potted"]
     path = tmp_path / "break.gsd"

@@ -31,7 +31,7 @@ def test_parse_and_load_give_a_scene():
     scene = carom.parse_scene(TWO_BALLS)
     assert scene.description == "two balls"
     assert scene.ball_count == 2 and len(scene) == 2
-    billiards = carom.load_scene(EXAMPLES / "billiards.json")
+    billiards = carom.load_scene(EXAMPLES / "billiards-frictionless.json")
     assert billiards.ball_count == 16 and billiards.pocket_count == 6
     assert "billiards" in billiards.description
 
@@ -109,7 +109,7 @@ def test_the_same_run_as_the_world_gives():
 
 
 def test_pockets_take_balls_and_leave_nan_rows():
-    scene = carom.load_scene(EXAMPLES / "billiards.json")
+    scene = carom.load_scene(EXAMPLES / "billiards-frictionless.json")
     run = carom.run_scene(scene, until=3.0, frame_interval=0.5)
     assert len(run["potted"]) > 0
     for potted in run["potted"]:

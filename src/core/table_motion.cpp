@@ -16,7 +16,8 @@ constexpr double kForever = std::numeric_limits<double>::infinity();
 // of v − R·ω leaves that much where the two cancel.
 constexpr double kSlipRounding = 0x1p-40;
 
-double speed_of(Vec2 v) { return std::sqrt(length_squared(v)); }
+// (By hypot: a speed of 1e-163, which a sum of impulses can leave, squares to nothing.)
+double speed_of(Vec2 v) { return length(v); }
 
 // How fast the twist decays: the spinning friction's torque over the moment of inertia.
 double twist_decay(const TableBall& ball, const Cloth& cloth) {
@@ -67,11 +68,10 @@ double time_in_state(const TableBall& ball, const Cloth& cloth) {
 Vec2 table_acceleration(const TableBall& ball, const Cloth& cloth) {
   switch (table_state(ball)) {
     case TableState::sliding: {
-      const Vec2 slip = contact_velocity(ball);
-      return slip * (-cloth.sliding * cloth.g / speed_of(slip));
+      return normalized(contact_velocity(ball)) * (-cloth.sliding * cloth.g);
     }
     case TableState::rolling:
-      return ball.velocity * (-cloth.rolling * cloth.g / speed_of(ball.velocity));
+      return normalized(ball.velocity) * (-cloth.rolling * cloth.g);
     case TableState::spinning:
     case TableState::stationary:
       return {};
@@ -302,7 +302,11 @@ double cushion_bounce(TableBall& ball, Vec2 normal, const Cushion& cushion) {
   const double turn_z = k * (m[0] * impulse[1] - m[1] * impulse[0]);
   ball.spin = ball.spin + normal * turn_n + along * turn_s;
   ball.twist += turn_z;
-  return -impulse[0];
+  // A nose far above the equator pushes mostly down, and friction can push along: what is left of
+  // the approach in the plane is stopped by the cushion's face (the ball leaves along it).
+  const double left = dot(ball.velocity, normal);
+  if (left > 0.0) ball.velocity = ball.velocity - normal * left;
+  return vn - dot(ball.velocity, normal);
 }
 
 }  // namespace carom::detail

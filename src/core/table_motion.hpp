@@ -107,9 +107,10 @@ struct Cushion {
 // A ball meeting a cushion, `normal` the unit vector in the table's plane from its centre
 // towards the cushion: Han's model (2005), the contact on the nose above the ball's equator,
 // one impulse of normal restitution and Coulomb friction against the contact point's slip
-// (stopping at sticking), the table taking its vertical part. Returns the impulse's part along
-// `normal` in the table's plane (its size, over the mass). Derivation: docs/derivation.md,
-// "A ball on a cloth".
+// (stopping at sticking), the table taking its vertical part; what is left of the approach in
+// the plane (a nose far above the equator) is stopped by the cushion's face. Returns the change
+// of the velocity along `normal` (its size). Derivation: docs/derivation.md, "A ball on a
+// cloth".
 double cushion_bounce(TableBall& ball, Vec2 normal, const Cushion& cushion);
 
 }  // namespace carom::detail

@@ -104,6 +104,62 @@ void check_names(const Scene& scene) {
   }
 }
 
+// Spins and shots belong to a table; each shot strikes a movable ball of the scene by name, its
+// tip on the ball, in order of time from the scene's.
+void check_table(const Scene& scene, const std::vector<SceneBall>& balls, const Origins& origins) {
+  if (!scene.world.table) {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (balls[i].spin == Spin{}) continue;
+      JsonPath where = origins.of(i, balls).path;
+      where.emplace_back(std::string("spin"));
+      throw PathedSceneError(where,
+                             "[" + number_text(balls[i].spin.x) + ", " +
+                                 number_text(balls[i].spin.y) + ", " +
+                                 number_text(balls[i].spin.z) + "]",
+                             "must be [0, 0, 0] without world.table: only balls on a table spin");
+    }
+    if (!scene.shots.empty()) {
+      throw PathedSceneError({std::string("shots")}, "",
+                             "needs world.table: a cue strikes balls on a table");
+    }
+    return;
+  }
+  std::unordered_map<std::string, std::size_t> by_name;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (balls[i].name) by_name.emplace(*balls[i].name, i);
+  }
+  double previous = scene.time;
+  for (std::size_t k = 0; k < scene.shots.size(); ++k) {
+    const SceneShot& shot = scene.shots[k];
+    const auto field = [k](const char* key) {
+      return JsonPath{std::string("shots"), k, std::string(key)};
+    };
+    const auto named = by_name.find(shot.ball);
+    if (named == by_name.end()) {
+      throw PathedSceneError(field("ball"), "\"" + shot.ball + "\"", "names no ball of the scene");
+    }
+    const SceneBall& ball = balls[named->second];
+    if (ball.mass == kImmovable) {
+      throw PathedSceneError(field("ball"), "\"" + shot.ball + "\"",
+                             "is an immovable ball: a cue cannot move it");
+    }
+    if (!(shot.cue.side * shot.cue.side + shot.cue.height * shot.cue.height <
+          ball.radius * ball.radius)) {
+      throw PathedSceneError(field("side"), number_text(shot.cue.side),
+                             "must meet the ball: side² + height² must stay below its radius² (" +
+                                 number_text(ball.radius) + "²)");
+    }
+    if (!(shot.time >= previous)) {
+      throw PathedSceneError(
+          field("time"), number_text(shot.time),
+          k == 0 ? "must not come before the scene's time (" + number_text(scene.time) + ")"
+                 : "must not come before the shot before it (" + number_text(previous) +
+                       "): shots go in order of time");
+    }
+    previous = shot.time;
+  }
+}
+
 void check_inside_box(const Scene& scene, const std::vector<SceneBall>& balls,
                       const Origins& origins) {
   if (scene.world.boundary != Boundary::box) return;
@@ -245,6 +301,7 @@ std::vector<SceneBall> check_scene(const Scene& scene) {
   check_inside_box(scene, balls, origins);
   check_walls(scene, balls, origins);
   check_overlaps(scene, balls, origins);
+  check_table(scene, balls, origins);
   return balls;
 }
 

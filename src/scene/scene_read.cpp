@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -70,12 +71,41 @@ SceneUnits read_units(const ObjectFields& fields) {
   return units;
 }
 
+// world.table: each key optional, its default Table's.
+std::optional<Table> read_table(const ObjectFields& fields) {
+  if (!fields.has("table")) return std::nullopt;
+  const ObjectFields t(
+      fields.source(), fields.at("table"), fields.path_of("table"),
+      {"g", "sliding_friction", "rolling_friction", "spinning_friction", "ball_friction",
+       "cushion_height", "cushion_restitution", "cushion_friction", "contact_time"});
+  const Table defaults;
+  Table table;
+  table.g = positive(t, "g", defaults.g);
+  table.sliding_friction = non_negative(t, "sliding_friction", defaults.sliding_friction);
+  table.rolling_friction = non_negative(t, "rolling_friction", defaults.rolling_friction);
+  table.spinning_friction = non_negative(t, "spinning_friction", defaults.spinning_friction);
+  table.ball_friction = non_negative(t, "ball_friction", defaults.ball_friction);
+  table.cushion_height = t.number_or("cushion_height", defaults.cushion_height);
+  if (!(table.cushion_height >= 0.5 && table.cushion_height < 1.0)) {
+    t.fail("cushion_height",
+           "must lie in [0.5, 1): the nose's height as a share of the ball's "
+           "diameter, at or above its equator");
+  }
+  table.cushion_restitution = t.number_or("cushion_restitution", defaults.cushion_restitution);
+  if (!(table.cushion_restitution >= 0.0 && table.cushion_restitution <= 1.0)) {
+    t.fail("cushion_restitution", "must lie in [0, 1]");
+  }
+  table.cushion_friction = non_negative(t, "cushion_friction", defaults.cushion_friction);
+  table.contact_time = non_negative(t, "contact_time", defaults.contact_time);
+  return table;
+}
+
 WorldDef read_settings(const ObjectFields& fields) {
   WorldDef settings;
   if (!fields.has("world")) return settings;
   const ObjectFields w(fields.source(), fields.at("world"), fields.path_of("world"),
                        {"boundary", "lower", "upper", "restitution", "collapse_time", "cell_size",
-                        "gravity", "rest_height", "growth_rate"});
+                        "gravity", "rest_height", "growth_rate", "table"});
   const std::string boundary = w.optional_string("boundary").value_or("open");
   if (boundary == "open") {
     settings.boundary = Boundary::open;
@@ -111,7 +141,39 @@ WorldDef read_settings(const ObjectFields& fields) {
   if (settings.growth_rate != 0.0 && settings.gravity != Vec2{}) {
     w.fail("growth_rate", "must be 0 when gravity is set: balls grow or fall, not both");
   }
+  settings.table = read_table(w);
+  if (settings.table && settings.gravity != Vec2{}) {
+    w.fail("gravity", "must be unset on a table: the table's g pulls the balls onto the cloth");
+  }
+  if (settings.table && settings.growth_rate != 0.0) {
+    w.fail("growth_rate", "must be 0 on a table: balls on a cloth keep their size");
+  }
   return settings;
+}
+
+// A shot: {"ball": name, "time": t, "speed": v, "direction": radians, "elevation": radians,
+// "side": d, "height": d, "cue_mass": m, "restitution": e}; ball and speed required, time the
+// scene's when left out.
+SceneShot read_shot(const JsonSource& source, const nlohmann::json& json, const JsonPath& path,
+                    double scene_time) {
+  const ObjectFields f(source, json, path,
+                       {"ball", "time", "speed", "direction", "elevation", "side", "height",
+                        "cue_mass", "restitution"});
+  SceneShot shot;
+  shot.ball = f.string("ball");
+  shot.time = f.number_or("time", scene_time);
+  shot.cue.speed = f.number("speed");
+  if (!(shot.cue.speed >= 0.0)) f.fail("speed", "must be >= 0");
+  shot.cue.direction = f.number_or("direction", 0.0);
+  shot.cue.elevation = f.number_or("elevation", 0.0);
+  if (!(shot.cue.elevation >= 0.0 && shot.cue.elevation < 0.5 * std::numbers::pi)) {
+    f.fail("elevation", "must lie in [0, π/2) radians");
+  }
+  shot.cue.side = f.number_or("side", 0.0);
+  shot.cue.height = f.number_or("height", 0.0);
+  shot.cue.cue_mass = positive(f, "cue_mass", CueStrike{}.cue_mass);
+  shot.cue.restitution = restitution(f).value_or(CueStrike{}.restitution);
+  return shot;
 }
 
 std::optional<SceneThermostat> read_thermostat(const ObjectFields& fields) {
@@ -153,7 +215,7 @@ CollisionFilter read_filter(const ObjectFields& fields) {
 SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const JsonPath& path) {
   const ObjectFields f(
       source, json, path,
-      {"name", "position", "velocity", "radius", "mass", "restitution", "color", "filter"});
+      {"name", "position", "velocity", "radius", "mass", "restitution", "color", "filter", "spin"});
   SceneBall ball;
   ball.name = f.optional_string("name");
   ball.position = f.vector("position");
@@ -163,6 +225,16 @@ SceneBall read_ball(const JsonSource& source, const nlohmann::json& json, const 
   ball.restitution = restitution(f);
   ball.color = color(f);
   ball.filter = read_filter(f);
+  if (f.has("spin")) {
+    const nlohmann::json& spin = f.at("spin");
+    const JsonPath at = f.path_of("spin");
+    if (!spin.is_array() || spin.size() != 3) {
+      f.fail("spin", "must be an array of three numbers [x, y, z] (radians a time unit)");
+    }
+    ball.spin = {ObjectFields::number_value(source, spin[0], child(at, 0)),
+                 ObjectFields::number_value(source, spin[1], child(at, 1)),
+                 ObjectFields::number_value(source, spin[2], child(at, 2))};
+  }
   return ball;
 }
 
@@ -410,7 +482,7 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   const ObjectFields top(
       source, json, {},
       {"carom_scene", "description", "units", "world", "time", "balls", "segments", "polylines",
-       "arcs", "pockets", "sensors", "generators", "thermostat"});
+       "arcs", "pockets", "sensors", "generators", "thermostat", "shots"});
   if (top.has("carom_scene")) {
     const std::uint64_t version = top.whole_number("carom_scene");
     if (version != kSceneFormatVersion) {
@@ -451,6 +523,10 @@ Scene parse_scene(std::string_view json_text, std::string_view source_name) {
   read_array(top, "sensors", scene.sensors, read_sensor);
   read_array(top, "generators", scene.generators, read_generator);
   scene.thermostat = read_thermostat(top);
+  read_array(top, "shots", scene.shots,
+             [&scene](const JsonSource& text, const nlohmann::json& item, const JsonPath& at) {
+               return read_shot(text, item, at, scene.time);
+             });
   if (scene.balls.size() > kMaxSceneBalls) {
     top.fail("balls", "holds more than " + std::to_string(kMaxSceneBalls) + " balls");
   }

@@ -38,6 +38,8 @@ void append(SceneWorld& sw, std::vector<ContactEvent>* contacts, std::vector<Pot
       }
     }
   }
+  const std::span<const MotionEvent> motions = sw.world.motion_events();
+  sw.motion_events.insert(sw.motion_events.end(), motions.begin(), motions.end());
   if (contacts == nullptr) return;
   const std::span<const ContactEvent> now = sw.world.contacts();
   contacts->insert(contacts->end(), now.begin(), now.end());
@@ -143,13 +145,8 @@ SceneWorld make_world(const Scene& scene) {
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const SceneBall& b = balls[i];
     try {
-      const BallId id = sw.world.add_ball({b.position,
-                                           b.velocity,
-                                           b.radius,
-                                           b.mass,
-                                           b.restitution,
-                                           static_cast<std::uint64_t>(i),
-                                           {}},
+      const BallId id = sw.world.add_ball({b.position, b.velocity, b.radius, b.mass, b.restitution,
+                                           static_cast<std::uint64_t>(i), b.spin},
                                           b.filter);
       sw.balls.push_back(id);
       if (b.name) sw.by_name[*b.name] = id;
@@ -229,23 +226,8 @@ std::uint64_t collisions_with_thermostat(SceneWorld& sw, std::uint64_t count,
   return done;
 }
 
-}  // namespace
-
-double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,
-                  std::vector<PottedBall>* potted) {
-  sw.sensor_events.clear();
-  const double start = sw.world.time();
-  if (!sw.scene.thermostat) {
-    const double advanced = sw.world.step(dt);
-    append(sw, contacts, potted);
-    return advanced;
-  }
-  return run_scene_until(sw, start + dt, contacts, potted);
-}
-
-double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
-                       std::vector<PottedBall>* potted) {
-  sw.sensor_events.clear();
+double until_between_shots(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
+                           std::vector<PottedBall>* potted) {
   const double start = sw.world.time();
   if (!sw.scene.thermostat) {
     advance_until(sw, time, contacts, potted);
@@ -271,12 +253,92 @@ double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* c
   return sw.world.time() - start;
 }
 
+double step_between_shots(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,
+                          std::vector<PottedBall>* potted) {
+  const double start = sw.world.time();
+  if (!sw.scene.thermostat) {
+    const double advanced = sw.world.step(dt);
+    append(sw, contacts, potted);
+    return advanced;
+  }
+  return until_between_shots(sw, start + dt, contacts, potted);
+}
+
+std::uint64_t collisions_between_shots(SceneWorld& sw, std::uint64_t count,
+                                       std::vector<ContactEvent>* contacts,
+                                       std::vector<PottedBall>* potted, double time_limit) {
+  if (!sw.scene.thermostat) return advance_collisions(sw, count, contacts, potted, time_limit);
+  return collisions_with_thermostat(sw, count, contacts, potted, time_limit);
+}
+
+// The world time of the next shot still to strike (infinity when none is left).
+double next_shot_time(const SceneWorld& sw) {
+  if (sw.shots_taken >= sw.scene.shots.size()) return std::numeric_limits<double>::infinity();
+  return sw.scene.shots[sw.shots_taken].time - sw.start_time;
+}
+
+// Strikes every shot whose time has come; a ball potted before its shot is not struck.
+void take_due_shots(SceneWorld& sw) {
+  while (sw.shots_taken < sw.scene.shots.size() && next_shot_time(sw) <= sw.world.time()) {
+    const SceneShot& shot = sw.scene.shots[sw.shots_taken++];
+    const auto named = sw.by_name.find(shot.ball);
+    if (named == sw.by_name.end() || !sw.world.contains(named->second)) continue;
+    sw.world.strike(named->second, shot.cue);
+  }
+}
+
+// Each call starts with no sensor or motion events of its own and the shots due struck.
+void start_call(SceneWorld& sw) {
+  sw.sensor_events.clear();
+  sw.motion_events.clear();
+  take_due_shots(sw);
+}
+
+double until_with_shots(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
+                        std::vector<PottedBall>* potted) {
+  const double start = sw.world.time();
+  for (;;) {
+    static_cast<void>(
+        until_between_shots(sw, std::min(time, next_shot_time(sw)), contacts, potted));
+    if (sw.world.stop_reason() == StopReason::interrupted) break;
+    take_due_shots(sw);
+    if (sw.world.time() >= time) break;
+  }
+  return sw.world.time() - start;
+}
+
+}  // namespace
+
+double step_scene(SceneWorld& sw, double dt, std::vector<ContactEvent>* contacts,
+                  std::vector<PottedBall>* potted) {
+  start_call(sw);
+  const double end = sw.world.time() + dt;
+  if (next_shot_time(sw) > end) return step_between_shots(sw, dt, contacts, potted);
+  return until_with_shots(sw, end, contacts, potted);
+}
+
+double run_scene_until(SceneWorld& sw, double time, std::vector<ContactEvent>* contacts,
+                       std::vector<PottedBall>* potted) {
+  start_call(sw);
+  return until_with_shots(sw, time, contacts, potted);
+}
+
 std::uint64_t run_scene_collisions(SceneWorld& sw, std::uint64_t count,
                                    std::vector<ContactEvent>* contacts,
                                    std::vector<PottedBall>* potted, double time_limit) {
-  sw.sensor_events.clear();
-  if (!sw.scene.thermostat) return advance_collisions(sw, count, contacts, potted, time_limit);
-  return collisions_with_thermostat(sw, count, contacts, potted, time_limit);
+  start_call(sw);
+  std::uint64_t done = 0;
+  for (;;) {
+    const double shot_time = next_shot_time(sw);
+    done += collisions_between_shots(sw, count - done, contacts, potted,
+                                     std::min(time_limit, shot_time));
+    if (sw.world.stop_reason() == StopReason::interrupted || done >= count) break;
+    if (sw.world.time() < shot_time) break;  // stopped before the next shot, for its own reason
+    // (A world at rest waited for the shot: its run reached the shot's time.)
+    take_due_shots(sw);
+    if (sw.world.time() >= time_limit) break;
+  }
+  return done;
 }
 
 namespace {
@@ -323,6 +385,9 @@ Scene capture_scene(const SceneWorld& sw) {
   scene.balls.clear();
   scene.generators.clear();
   scene.time = sw.time();
+  // The shots struck are in the balls' velocities and spins now.
+  scene.shots.erase(scene.shots.begin(),
+                    scene.shots.begin() + static_cast<std::ptrdiff_t>(sw.shots_taken));
   // set_gravity may have changed it since the world was built.
   scene.world.gravity = sw.world.def().gravity;
   // The world's own settings are what it ran with, whatever the scene it came from said.
@@ -336,6 +401,7 @@ Scene capture_scene(const SceneWorld& sw) {
     ball.position = sw.world.position(id);
     ball.velocity = sw.world.velocity(id);
     ball.radius = sw.world.radius(id);
+    if (scene.world.table) ball.spin = sw.world.spin(id);
     scene.balls.push_back(ball);
   }
   return scene;

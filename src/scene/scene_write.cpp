@@ -30,6 +30,8 @@ bool any_bit_set(Vec2 v) {
   return v.x != 0.0 || v.y != 0.0 || std::signbit(v.x) || std::signbit(v.y);
 }
 
+bool any_bit_set(Spin s) { return any_bit_set(Vec2{s.x, s.y}) || s.z != 0.0 || std::signbit(s.z); }
+
 // Members of one JSON object on one line: "key": value, ...
 class Line {
  public:
@@ -84,6 +86,9 @@ std::string ball_line(const SceneBall& b) {
   if (b.restitution) line.add("restitution", num(*b.restitution));
   if (b.color) line.add("color", str(*b.color));
   add_filter(line, b.filter);
+  if (any_bit_set(b.spin)) {
+    line.add("spin", "[" + num(b.spin.x) + ", " + num(b.spin.y) + ", " + num(b.spin.z) + "]");
+  }
   return line.done();
 }
 
@@ -168,6 +173,20 @@ std::string to_json_text(const Scene& scene) {
   // Only when not the world's default, so that a scene that leaves it out writes no key either.
   if (w.rest_height != WorldDef{}.rest_height) world.add("rest_height", num(w.rest_height));
   if (w.growth_rate != 0.0) world.add("growth_rate", num(w.growth_rate));
+  if (w.table) {
+    const Table& t = *w.table;
+    world.add("table", Line()
+                           .add("g", num(t.g))
+                           .add("sliding_friction", num(t.sliding_friction))
+                           .add("rolling_friction", num(t.rolling_friction))
+                           .add("spinning_friction", num(t.spinning_friction))
+                           .add("ball_friction", num(t.ball_friction))
+                           .add("cushion_height", num(t.cushion_height))
+                           .add("cushion_restitution", num(t.cushion_restitution))
+                           .add("cushion_friction", num(t.cushion_friction))
+                           .add("contact_time", num(t.contact_time))
+                           .done());
+  }
   out += ",\n  \"world\": " + world.done();
   out += ",\n  \"time\": " + num(scene.time);
   write_array(out, "balls", scene.balls, ball_line);
@@ -229,6 +248,19 @@ std::string to_json_text(const Scene& scene) {
     out += ",\n  \"thermostat\": " + thermostat.done();
   }
   write_array(out, "generators", scene.generators, generator_line);
+  write_array(out, "shots", scene.shots, [](const SceneShot& shot) {
+    return Line()
+        .add("ball", str(shot.ball))
+        .add("time", num(shot.time))
+        .add("speed", num(shot.cue.speed))
+        .add("direction", num(shot.cue.direction))
+        .add("elevation", num(shot.cue.elevation))
+        .add("side", num(shot.cue.side))
+        .add("height", num(shot.cue.height))
+        .add("cue_mass", num(shot.cue.cue_mass))
+        .add("restitution", num(shot.cue.restitution))
+        .done();
+  });
   out += "\n}\n";
   return out;
 }

@@ -45,4 +45,13 @@ struct Carriage {
   return dot(u - w, n) > 0x1p-50 * scale;
 }
 
+// On a table: whether a touching pair at velocities `u` and `w`, with relative acceleration
+// `press_by` (the first's less the second's), approaches along `n`, or keeps touching with no
+// relative motion along it (to rounding) while the acceleration presses it together.
+[[nodiscard]] inline bool held_or_approaching(Vec2 u, Vec2 w, Vec2 press_by, Vec2 n) {
+  const double rounding = 0x1p-50 * (std::abs(u.x) + std::abs(u.y) + std::abs(w.x) + std::abs(w.y));
+  const double approach = dot(u - w, n);
+  return approach > rounding || (approach >= -rounding && dot(press_by, n) > 0.0);
+}
+
 }  // namespace carom::detail

@@ -65,7 +65,8 @@ void validate_table(const char* function, const Table& table) {
       {"def.table.rolling_friction", table.rolling_friction},
       {"def.table.spinning_friction", table.spinning_friction},
       {"def.table.ball_friction", table.ball_friction},
-      {"def.table.cushion_friction", table.cushion_friction}};
+      {"def.table.cushion_friction", table.cushion_friction},
+      {"def.table.contact_time", table.contact_time}};
   for (const auto& [name, value] : frictions) {
     detail::require_finite(function, name, value);
     detail::require_non_negative(function, name, value);
@@ -170,6 +171,8 @@ World::World(const WorldDef& def) : impl_(std::make_unique<Impl>()) {
     }
   }
   impl_->def = def;
+  // On a table a contact lasts Table::contact_time unless the world says otherwise.
+  if (def.table && def.collapse_time == 0.0) impl_->def.collapse_time = def.table->contact_time;
   impl_->gravity_on = def.gravity != Vec2{};
   impl_->growth_on = def.growth_rate != 0.0;
   impl_->growth_relative = def.growth_rate;

@@ -189,6 +189,11 @@ void World::Impl::predict_under_gravity(std::uint32_t ball) {
                             double other_growth) {
     if (time + t != time || offset == Vec2{}) return true;
     const Vec2 normal = normalized(-offset);
+    // On a table a pair acts now only where it approaches, or touches at rest relative to each
+    // other (to rounding) with friction pressing it together: one that separates, however the
+    // cloth slows it, has no contact now.
+    if (table_on)
+      return detail::held_or_approaching(v, other_velocity, a - other_acceleration, normal);
     return detail::approaching(v, other_velocity, normal) ||
            dot(a - other_acceleration, normal) > 0.0 || growth + other_growth > 0.0;
   };

@@ -302,9 +302,10 @@ std::string World::Impl::save_payload() const {
 
 void World::Impl::save_table(detail::ByteWriter& out) const {
   const Table& table = *def.table;
-  for (const double value : {table.g, table.sliding_friction, table.rolling_friction,
-                             table.spinning_friction, table.ball_friction, table.cushion_height,
-                             table.cushion_restitution, table.cushion_friction}) {
+  for (const double value :
+       {table.g, table.sliding_friction, table.rolling_friction, table.spinning_friction,
+        table.ball_friction, table.cushion_height, table.cushion_restitution,
+        table.cushion_friction, table.contact_time}) {
     out.f64(value);
   }
   for (const std::uint32_t i : slot_of_handle) {
@@ -650,6 +651,7 @@ void World::Impl::load_table(ByteReader& in) {
   table.cushion_height = in.f64("table cushion height");
   table.cushion_restitution = in.f64("table cushion restitution");
   table.cushion_friction = in.f64("table cushion friction");
+  table.contact_time = in.f64("table contact time");
   try {
     WorldDef check;
     check.table = table;

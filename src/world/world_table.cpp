@@ -67,10 +67,27 @@ void World::Impl::set_on_table(std::uint32_t ball, const TableBall& state, doubl
     slot = detail::TableSlot{};
     return;
   }
-  slot.spin = state.spin;
-  slot.twist = state.twist;
-  const detail::StateMotion motion = detail::state_motion(state, cloth);
+  // A state that would end within the clock's rounding of t ends now: otherwise its end, at t
+  // itself, and the contacts it changes could follow one another at one instant without end.
+  TableBall now = state;
+  detail::StateMotion motion = detail::state_motion(now, cloth);
+  // (Three ends at most: sliding, rolling, spinning.)
+  for (int ends = 0;
+       ends < 3 && motion.state != detail::TableState::stationary && t + motion.duration == t;
+       ++ends) {
+    now = detail::end_of_state(now, motion, cloth);
+    motion = detail::state_motion(now, cloth);
+  }
+  b.velocity = now.velocity;
+  slot.spin = now.spin;
+  slot.twist = now.twist;
   slot.state = motion.state;
+  if (slot.state == detail::TableState::stationary) {
+    // At rest, exactly: no negative zero left over to tell two resting balls apart.
+    b.velocity = {};
+    slot.spin = {};
+    slot.twist = 0.0;
+  }
   slot.acceleration = motion.acceleration;
   slot.ends = t + motion.duration;
   if (slot.state != before && record && record_contacts) {
@@ -119,7 +136,10 @@ bool World::Impl::resolve_pair_on_table(std::uint32_t i, std::uint32_t j, double
   bool resolved = false;
   const double press = dot(acceleration_of(i) - acceleration_of(j), normal);
   const double reach = radius_of(i) + radius_of(j);
-  if (approach < hold_speed(press, def.rest_height, 0.5 * reach)) {
+  const bool pressed =
+      press > 0.0 && detail::held_or_approaching(a.velocity, b.velocity,
+                                                 acceleration_of(i) - acceleration_of(j), normal);
+  if (pressed && approach < hold_speed(press, def.rest_height, 0.5 * reach)) {
     // Slow, and pressed together: held, rolling on side by side (docs/engine.md, "The table").
     const Vec2 before = a.velocity;
     detail::roll_together(first, second);
@@ -160,7 +180,9 @@ bool World::Impl::resolve_wall_on_table(std::uint32_t i, std::uint32_t wall, dou
   TableBall ball = table_ball(i);
   bool resolved = false;
   const double press = dot(acceleration_of(i), normal);
-  if (approach < hold_speed(press, def.rest_height, radius_of(i))) {
+  const bool pressed =
+      press > 0.0 && detail::held_or_approaching(a.velocity, {}, acceleration_of(i), normal);
+  if (pressed && approach < hold_speed(press, def.rest_height, radius_of(i))) {
     detail::roll_along(ball, normal);
     if (approach > 0.0) {
       record_ball_wall(i, wall, t, point, normal, approach, approach - dot(ball.velocity, normal));

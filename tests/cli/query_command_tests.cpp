@@ -18,7 +18,7 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-const std::string kBilliards = std::string(CAROM_EXAMPLES_DIR) + "/billiards.json";
+const std::string kBilliards = std::string(CAROM_EXAMPLES_DIR) + "/billiards-frictionless.json";
 
 json query_json(const std::vector<std::string>& args) {
   std::vector<std::string> all{"query", kBilliards};

@@ -85,8 +85,8 @@ TEST(RunCommand, FramesAsExtendedXyz) {
 TEST(RunCommand, EventsAsJsonLinesIncludingPotting) {
   const ScratchDir dir;
   const std::string events = (dir / "events.jsonl").string();
-  const ToolRun run = run_carom(
-      {"run", example("billiards.json"), "--until", "10", "--events", events, "--stats", "--json"});
+  const ToolRun run = run_carom({"run", example("billiards-frictionless.json"), "--until", "10",
+                                 "--events", events, "--stats", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto stats = nlohmann::json::parse(run.out);
   const std::vector<std::string> lines = lines_of(read_file(events));
@@ -271,11 +271,11 @@ TEST(InfoCommand, CountsEnergyPackingAndSmallestGap) {
 }
 
 TEST(InfoCommand, TextNamesTheClosestPair) {
-  const ToolRun run = run_carom({"info", example("billiards.json")});
+  const ToolRun run = run_carom({"info", example("billiards-frictionless.json")});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("balls             16 (0 generated, 0 immovable)"));
   EXPECT_THAT(run.out, HasSubstr("pockets           6"));
-  // The racked balls are 1e-4 apart (examples/billiards.json).
+  // The racked balls are 1e-4 apart (examples/billiards-frictionless.json).
   EXPECT_THAT(run.out, HasSubstr("smallest gap      0.0001 ("));
   EXPECT_THAT(run.out, HasSubstr("valid             yes"));
 }

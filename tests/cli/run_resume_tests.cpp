@@ -123,9 +123,9 @@ TEST(RunResume, BilliardsWithPocketsResumedEndsBitIdentical) {
   const ScratchDir dir;
   const std::string checkpoint = (dir / "billiards.ckpt").string();
   const ToolRun first =
-      run_carom({"run", example("billiards.json"), "--until", "30", "--checkpoint", checkpoint,
-                 "--checkpoint-every", "10", "--save", (dir / "first.json").string(), "--events",
-                 (dir / "first.jsonl").string(), "--quiet"});
+      run_carom({"run", example("billiards-frictionless.json"), "--until", "30", "--checkpoint",
+                 checkpoint, "--checkpoint-every", "10", "--save", (dir / "first.json").string(),
+                 "--events", (dir / "first.jsonl").string(), "--quiet"});
   ASSERT_EQ(first.exit_code, 0) << first.err;
   const ToolRun resumed = run_carom({"run", "--resume", checkpoint + ".prev", "--until", "30",
                                      "--save", (dir / "resumed.json").string(), "--events",

@@ -108,7 +108,8 @@ TEST(VerbStop, RenderEndsTheAnimationAtTheLastFrameDrawn) {
   const std::string gif = (dir / "break.gif").string();
   // 6000 frames: far more than are drawn before the signal, which comes once ffmpeg has started.
   const ToolRun run = stopped_after(
-      SIGTERM, {"render", example("billiards.json"), "--animate", gif, "--until", "200"},
+      SIGTERM,
+      {"render", example("billiards-frictionless.json"), "--animate", gif, "--until", "200"},
       std::chrono::milliseconds(300), gif + ".tmp");
   ASSERT_EQ(run.exit_code, kExitTerminated) << run.err;
   EXPECT_EQ(read_file(gif).substr(0, 6), "GIF89a");
@@ -171,9 +172,9 @@ TEST(VerbStop, ProgressIsShownDuringARunWithoutContacts) {
 TEST(VerbStop, AnimationShowsItsProgress) {
   const ScratchDir dir;
   const std::string gif = (dir / "break.gif").string();
-  const auto [seen, status] =
-      on_a_terminal({"render", example("billiards.json"), "--animate", gif, "--until", "200"},
-                    std::chrono::milliseconds(1200));
+  const auto [seen, status] = on_a_terminal(
+      {"render", example("billiards-frictionless.json"), "--animate", gif, "--until", "200"},
+      std::chrono::milliseconds(1200));
   EXPECT_EQ(status, kExitInterrupted) << seen;
   EXPECT_THAT(seen, AnyOf(HasSubstr("surveying the run"), HasSubstr(" of 6001")));
 }

@@ -75,8 +75,8 @@ TEST(Wording, DashOIsOut) {
 
 // A scene that loses energy by design says "change"; one that conserves it says "drift".
 TEST(Wording, ChangesAreDriftOnlyWhereTheSceneConservesThem) {
-  const ToolRun lossy =
-      run_carom({"run", example("billiards.json"), "--until", "10", "--stats", "--quiet"});
+  const ToolRun lossy = run_carom(
+      {"run", example("billiards-frictionless.json"), "--until", "10", "--stats", "--quiet"});
   ASSERT_EQ(lossy.exit_code, 0) << lossy.err;
   EXPECT_THAT(lossy.out, HasSubstr("(change "));
   EXPECT_THAT(lossy.out, Not(HasSubstr("drift")));

@@ -2,9 +2,11 @@
 // 5/7 of its speed after 2v/(7·μs·g), a rolling ball stops after v²/(2·μr·g), a spin stops after
 // 2R|ωz|/(5·μsp·g)), and over random shots with side, top and back spin: the angular momentum
 // about the contact point is kept through the slide, the rolling velocity is v − 2/7·u, the
-// energy never rises, and each state leads to the next.
+// energy never rises, and each state leads to the next. Cushions (Han's model) and held contacts:
+// the closed forms without friction, and over random cases energy that never rises.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -224,6 +226,82 @@ TEST(TableMotion, RandomShotsKeepTheContactMomentumLoseEnergyAndPassThroughEachS
       EXPECT_NE(table_state(now), before) << "shot " << k;
     }
     EXPECT_LE(states, 3) << "shot " << k;  // sliding, rolling, spinning at most
+  }
+}
+
+// Without friction the cushion's impulse runs through the centre: the spin is untouched and the
+// normal speed becomes vn·(1 − (1 + e)·cos²θ) (−e·vn where the nose is at the equator), or 0
+// where that would still go into the cushion.
+TEST(TableMotion, AFrictionlessCushionBouncesByTheNosesAngleAndTurnsNoSpin) {
+  for (const double height : {0.5, 0.635, 0.9}) {
+    TableBall b = ball({2.0, 0.5}, {3.0, -4.0}, 7.0);
+    const Cushion cushion{height, 0.8, 0.0};
+    const double sine = 2.0 * height - 1.0;
+    const double cosine_squared = 1.0 - sine * sine;
+    const double change = cushion_bounce(b, {1.0, 0.0}, cushion);
+    // (At 0.9 the nose pushes mostly down: the cushion's face stops the rest of the approach.)
+    const double after = std::min(2.0 * (1.0 - 1.8 * cosine_squared), 0.0);
+    EXPECT_NEAR(b.velocity.x, after, 1e-14) << height;
+    EXPECT_NEAR(change, 2.0 - after, 1e-14) << height;
+    EXPECT_EQ(b.velocity.y, 0.5) << height;
+    EXPECT_EQ(b.spin, (Vec2{3.0, -4.0})) << height;
+    EXPECT_EQ(b.twist, 7.0) << height;
+  }
+}
+
+// A rolling ball sent square into a cushion above its equator: friction at the nose takes topspin
+// off it, and it leaves moving away.
+TEST(TableMotion, ACushionAboveTheEquatorCutsARollingBallsTopspin) {
+  TableBall b = ball({1.0, 0.0}, {0.0, 1.0 / kRadius});
+  cushion_bounce(b, {1.0, 0.0}, Cushion{});
+  EXPECT_LT(b.velocity.x, 0.0);
+  EXPECT_LT(b.spin.y, 1.0 / kRadius);
+  EXPECT_NEAR(b.velocity.y, 0.0, 1e-15);
+}
+
+TEST(TableMotion, RandomCushionBouncesNeverMakeEnergy) {
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 2000; ++k) {
+    TableBall b = ball({3.0 * unit(random), 3.0 * unit(random)},
+                       {150.0 * unit(random), 150.0 * unit(random)}, 80.0 * unit(random));
+    const double angle = 3.2 * unit(random);
+    const Vec2 normal{std::cos(angle), std::sin(angle)};
+    const Cushion cushion{0.75 + 0.24 * unit(random), 0.5 + 0.5 * std::abs(unit(random)),
+                          0.4 * std::abs(unit(random))};
+    const double before = energy(b);
+    const double approach = dot(b.velocity, normal);
+    const double change = cushion_bounce(b, normal, cushion);
+    EXPECT_LE(energy(b), before * (1.0 + 1e-12)) << "bounce " << k;
+    if (approach > 0.0) {
+      EXPECT_NEAR(dot(b.velocity, normal), approach - change, 1e-12) << "bounce " << k;
+      EXPECT_LE(dot(b.velocity, normal), 1e-12) << "bounce " << k;
+    } else {
+      EXPECT_EQ(change, 0.0) << "bounce " << k;
+    }
+  }
+}
+
+// Held: both roll on at their momentum-weighted common velocity, momentum kept, energy lost.
+TEST(TableMotion, APairHeldTogetherRollsOnAtItsCommonVelocity) {
+  std::mt19937_64 random(19);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 500; ++k) {
+    TableBall a = ball({unit(random), unit(random)}, {50.0 * unit(random), 50.0 * unit(random)});
+    TableBall b = ball({unit(random), unit(random)}, {50.0 * unit(random), 50.0 * unit(random)});
+    a.mass = 1.0 + std::abs(unit(random));
+    b.mass = 1.0 + std::abs(unit(random));
+    // The slides' ends first (v − 2/7·u), then the common velocity.
+    const Vec2 momentum = (a.velocity - contact_velocity(a) * (2.0 / 7.0)) * a.mass +
+                          (b.velocity - contact_velocity(b) * (2.0 / 7.0)) * b.mass;
+    const double before = a.mass * energy(a) + b.mass * energy(b);
+    roll_together(a, b);
+    EXPECT_EQ(a.velocity, b.velocity) << k;
+    const Vec2 after = a.velocity * a.mass + b.velocity * b.mass;
+    EXPECT_NEAR(after.x, momentum.x, 1e-12) << k;
+    EXPECT_NEAR(after.y, momentum.y, 1e-12) << k;
+    EXPECT_LE(a.mass * energy(a) + b.mass * energy(b), before * (1.0 + 1e-12)) << k;
+    EXPECT_EQ(table_state(a), TableState::rolling) << k;
   }
 }
 

@@ -124,7 +124,7 @@ TEST_P(ReferenceHash, TheContactsAndTheEndAreBitIdentical) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, ReferenceHash,
-    ::testing::Values(Reference{"billiards", 40, 0.05, 200, 0x73deb09f8b73fde6ULL},
+    ::testing::Values(Reference{"billiards-frictionless", 40, 0.05, 200, 0x73deb09f8b73fde6ULL},
                       Reference{"box-of-1000", 20, 0.1, 5000, 0xf778b9e92d9eea05ULL},
                       Reference{"newtons-cradle", 20, 0.5, 50, 0x2a7c03d4d0b97c12ULL},
                       Reference{"periodic-gas", 2, 0.01, 20000, 0x94148229afe4e581ULL},

@@ -24,7 +24,7 @@ after(async () => {
 const example = (name) => resolve(REPO, 'examples', name);
 
 const PICTURES = {
-  'momentum plot': ['render', example('billiards.json'), '--plot', 'momentum', '--until', '2'],
+  'momentum plot': ['render', example('billiards-frictionless.json'), '--plot', 'momentum', '--until', '2'],
   'energy plot': ['render', example('pinball.json'), '--plot', 'energy', '--until', '1'],
   'rate plot': ['render', example('box-of-1000.json'), '--plot', 'rate', '--until', '1'],
   'scene picture': ['render', example('pinball.json'), '--at', '1', '--arrows', '--color', 'speed'],

@@ -33,6 +33,8 @@ namespace {
 constexpr double kChunksPerRun = 200.0;
 // Without --every, `--until` writes this many frames after the first.
 constexpr double kDefaultFrames = 100.0;
+// Contacts a chunk of a run until rest (for the events file, the progress line and checkpoints).
+constexpr std::uint64_t kRestChunk = 1000;
 // What an output takes, for the check of free space before a run: a frame's line for a ball and
 // an event's JSON line, a quarter above what the box of 1000 writes (95 bytes a ball in CSV, 93 in
 // extended XYZ; 225 an event), since long names and full-precision numbers take more.
@@ -59,7 +61,8 @@ struct RunOptions {
   bool quiet = false;
 };
 
-enum class Mode : std::uint8_t { until, steps, collisions };
+// rest: until every ball rests and every shot is struck (a scene on a table, with no other mode).
+enum class Mode : std::uint8_t { until, steps, collisions, rest };
 
 struct RunPlan {
   Mode mode = Mode::until;
@@ -95,11 +98,14 @@ RunPlan parse(const RunOptions& o) {
   }
   const int modes = static_cast<int>(!o.until.empty()) + static_cast<int>(!o.steps.empty()) +
                     static_cast<int>(!o.collisions.empty());
-  if (modes != 1) {
+  if (modes > 1) {
     throw UsageError("--until/--steps/--collisions", "",
                      "give exactly one of --until T, --steps K (with --dt DT) or --collisions K");
   }
-  if (!o.until.empty()) {
+  if (modes == 0) {
+    // Until rest: refused after the scene is read unless it is on a table (require_mode).
+    plan.mode = Mode::rest;
+  } else if (!o.until.empty()) {
     plan.mode = Mode::until;
     plan.until = parse_finite_number(o.until, {"--until", o.until, "a time"});
   } else if (!o.steps.empty()) {
@@ -125,7 +131,8 @@ RunPlan parse(const RunOptions& o) {
   if (!o.every.empty()) {
     if (plan.mode == Mode::collisions) {
       throw UsageError("--every", o.every,
-                       "frames at times need --until or --steps; with --collisions the frames "
+                       "frames at times need --until, --steps or a run until rest; with "
+                       "--collisions the frames "
                        "are the first and the last");
     }
     if (o.frames.empty()) throw UsageError("--every", o.every, "--every goes with --frames");
@@ -269,6 +276,9 @@ std::string plan_text(const RunProgress& p) {
       text = "--collisions " + std::to_string(p.collisions);
       if (p.has_time_limit) text += " --time-limit " + number_text(p.time_limit);
       break;
+    case Mode::rest:
+      text = "no --until/--steps/--collisions (until every ball rests)";
+      break;
   }
   if (p.every > 0.0) text += " --every " + number_text(p.every);
   if (p.checkpoint_every > 0.0) text += " --checkpoint-every " + number_text(p.checkpoint_every);
@@ -338,6 +348,9 @@ class Runner {
       case Mode::collisions:
         run_collisions();
         break;
+      case Mode::rest:
+        run_to_rest();
+        break;
     }
     built_.world.set_progress_callback(nullptr);
     if (frames_ && state_.last_frame_time != built_.time()) write_frame();
@@ -388,6 +401,8 @@ class Runner {
       case Mode::collisions:
         return static_cast<double>(state_.collisions_done + status.contacts) /
                static_cast<double>(plan_.collisions);
+      case Mode::rest:
+        break;  // (how long until rest is not known beforehand)
     }
     return 0.0;
   }
@@ -541,6 +556,33 @@ class Runner {
     }
   }
 
+  // Whether nothing will move again: every ball at rest and every shot struck.
+  [[nodiscard]] bool resting() const {
+    return built_.world.at_rest() && built_.shots_taken == built_.scene.shots.size();
+  }
+
+  // Until rest: chunks of contacts (the world waits through a rest for the next shot), or with
+  // --every chunks that end on the frame times.
+  void run_to_rest() {
+    std::uint64_t& next_frame = state_.next_frame;
+    while (!resting() && !stop_requested()) {
+      if (plan_.every) {
+        const double frame_time = start_ + static_cast<double>(next_frame) * *plan_.every;
+        const double world_end = std::max(frame_time - built_.start_time, built_.world.time());
+        run_scene_until(built_, world_end, &contacts_);
+        if (!interrupted()) {
+          write_frame();
+          ++next_frame;
+        }
+      } else {
+        static_cast<void>(run_scene_collisions(built_, kRestChunk, &contacts_));
+      }
+      after_chunk(0.0);
+      if (interrupted()) break;
+      checkpoint_if_due();
+    }
+  }
+
   const RunOptions& options_;
   const RunPlan& plan_;
   SceneWorld& built_;
@@ -606,6 +648,12 @@ int run(const RunOptions& options) {
   }
   SceneWorld& built = start.built;
   const RunProgress& p = start.progress;
+  if (plan.mode == Mode::rest && !built.scene.world.table) {
+    throw UsageError(
+        "--until/--steps/--collisions", "",
+        "give exactly one of --until T, --steps K (with --dt DT) or --collisions K (a scene "
+        "on a table, world.table, runs until every ball rests without one)");
+  }
   if (plan.mode == Mode::until && plan.until < built.time()) {
     throw UsageError("--until", options.until,
                      "the scene starts at time " + readable(built.time()) +
@@ -683,7 +731,9 @@ Command add_run_command(CLI::App& app) {
   verb->footer(
       "Advances the scene's world in exact event order (every contact at the time it\n"
       "happens) by one of: --until T (to scene time T), --steps K --dt DT (K steps of DT),\n"
-      "or --collisions K (the next K contacts; pocket contacts count). SCENE - reads the\n"
+      "or --collisions K (the next K contacts; pocket contacts count); a scene on a table\n"
+      "(world.table) runs with none of them until every ball rests and every shot is\n"
+      "struck. SCENE - reads the\n"
       "scene from standard input. --collisions returns early when it can prove that no\n"
       "contact will ever happen (balls flying apart, all at rest); some endless runs cannot\n"
       "be told apart from long ones (two balls in a periodic cell on a slanted orbit that\n"
@@ -700,7 +750,9 @@ Command add_run_command(CLI::App& app) {
       "  --events FILE   every contact as a JSON line: time, kind (ball_ball, ball_wall),\n"
       "                  scene ball indices, wall, point, normal, approach_speed, impulse;\n"
       "                  and in their places the pottings (potted: ball, pocket) and the\n"
-      "                  sensors' enters and exits.\n"
+      "                  sensors' enters and exits; on a table each ball's change of motion\n"
+      "                  state (motion: ball, from, to: sliding, rolling, spinning,\n"
+      "                  stationary).\n"
       "  --save FILE     the end state as a scene file to continue from.\n"
       "  --checkpoint FILE  at the end (and on a stop) and, with --checkpoint-every T,\n"
       "                  each time T of scene time has passed: the world and the run's\n"

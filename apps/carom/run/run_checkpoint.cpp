@@ -23,8 +23,9 @@ constexpr std::string_view kMagic = "CAROMCKP";
 // Version 2 added the time limit and the step in progress, version 3 the potential energy at the
 // start; older files read as having none of what came after them. Version 4 names the pockets by
 // their sensors' wall ids (they were immovable balls): older files, whose worlds hold pocket
-// balls, cannot be continued.
-constexpr std::uint32_t kVersion = 4;
+// balls, cannot be continued. Version 5 adds the shots struck (a table's); version 4 files had
+// none.
+constexpr std::uint32_t kVersion = 5;
 constexpr std::uint32_t kOldestVersion = 4;
 // magic, version, content size, checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8;
@@ -146,7 +147,7 @@ bool get_flag(Reader& r, const char* what) {
 RunProgress get_progress(Reader& r, std::uint32_t version) {
   RunProgress p;
   p.mode = r.get<std::uint8_t>("the run mode");
-  if (p.mode > 2) r.fail("inconsistent content: unknown run mode " + std::to_string(p.mode));
+  if (p.mode > 3) r.fail("inconsistent content: unknown run mode " + std::to_string(p.mode));
   p.until = r.get<double>("--until");
   p.steps = r.get<std::uint64_t>("--steps");
   p.dt = r.get<double>("--dt");
@@ -208,6 +209,7 @@ std::string encode_checkpoint(const SceneWorld& built, const RunProgress& progre
   std::ostringstream world(std::ios::binary);
   built.world.save(world);
   content.put_text(world.str());
+  content.put<std::uint64_t>(built.shots_taken);
 
   Writer file;
   file.bytes() = kMagic;
@@ -279,6 +281,11 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
     by_name[std::move(name)] = r.get_id("a name's id");
   }
   const std::string world_bytes(r.get_text("the world"));
+  const std::uint64_t shots_taken = version >= 5 ? r.get<std::uint64_t>("the shots struck") : 0;
+  if (shots_taken > scene.shots.size()) {
+    damaged(file, "inconsistent content: " + std::to_string(shots_taken) + " shots struck of " +
+                      std::to_string(scene.shots.size()));
+  }
   if (r.left() != 0) damaged(file, "inconsistent content: bytes after the world");
   std::istringstream world_in(world_bytes, std::ios::binary);
   std::optional<World> world;
@@ -312,6 +319,8 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& file) {
                      start_time,
                      0.0,
                      std::move(sensors),
+                     {},
+                     shots_taken,
                      {}},
           std::move(progress)};
 }

@@ -16,7 +16,7 @@ namespace carom::cli {
 
 // How far a run got, and what it was asked to do (a resumed run must be asked the same).
 struct RunProgress {
-  // The run's plan: mode (0 until, 1 steps, 2 collisions) and its numbers; every and
+  // The run's plan: mode (0 until, 1 steps, 2 collisions, 3 until rest) and its numbers; every and
   // checkpoint_every are 0 when not given.
   std::uint8_t mode = 0;
   double until = 0.0;

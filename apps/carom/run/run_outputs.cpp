@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 namespace carom::cli {
@@ -108,12 +109,47 @@ void FrameWriter::write_frame(const SceneWorld& built) {
   ++frames_;
 }
 
+namespace {
+
+const char* motion_state_name(MotionState state) {
+  switch (state) {
+    case MotionState::sliding:
+      return "sliding";
+    case MotionState::rolling:
+      return "rolling";
+    case MotionState::spinning:
+      return "spinning";
+    case MotionState::stationary:
+      break;
+  }
+  return "stationary";
+}
+
+}  // namespace
+
 void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDirectory& directory,
                         const SceneWorld& built, std::size_t wall_offset) {
   buffer_.clear();
   const auto index_json = [&](BallId id) -> nlohmann::ordered_json {
     if (const auto i = directory.ball_index(id)) return *i;
     return nullptr;
+  };
+  // On a table, the balls' changes of motion state, in time order among the contacts and the
+  // sensors' events (a change a contact makes comes after it).
+  std::size_t next_motion_event = 0;
+  const auto write_motion_events = [&](double before) {
+    for (; next_motion_event < built.motion_events.size() &&
+           built.motion_events[next_motion_event].time < before;
+         ++next_motion_event) {
+      const MotionEvent& e = built.motion_events[next_motion_event];
+      nlohmann::ordered_json line;
+      line["time"] = built.start_time + e.time;
+      line["kind"] = "motion";
+      line["ball"] = index_json(e.ball);
+      line["from"] = motion_state_name(e.from);
+      line["to"] = motion_state_name(e.to);
+      buffer_ += line.dump() + "\n";
+    }
   };
   std::size_t next_sensor_event = 0;
   // The sensor events placed before contact `before` (all that are left for contacts.size()).
@@ -122,6 +158,7 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
            built.sensor_events[next_sensor_event].contacts_before <= before;
          ++next_sensor_event) {
       const SensorEvent& e = built.sensor_events[next_sensor_event];
+      write_motion_events(e.time);
       nlohmann::ordered_json line;
       line["time"] = built.start_time + e.time;
       const auto pocket = std::find(built.pockets.begin(), built.pockets.end(), e.sensor);
@@ -145,6 +182,7 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
   for (std::size_t n = 0; n < contacts.size(); ++n) {
     write_sensor_events(n);
     const ContactEvent& c = contacts[n];
+    write_motion_events(c.time);
     nlohmann::ordered_json line;
     line["time"] = built.start_time + c.time;
     if (c.kind == ContactKind::ball_ball) {
@@ -168,6 +206,7 @@ void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDir
     buffer_ += line.dump() + "\n";
   }
   write_sensor_events(contacts.size());
+  write_motion_events(std::numeric_limits<double>::infinity());
   out_.write(buffer_);
 }
 

@@ -1,5 +1,5 @@
-// "Pool": an aim line on a billiards table. The table is examples/billiards.json (cushions as
-// segments, six pockets, fifteen racked balls and the cue ball), loaded with carom's scene
+// "Pool": an aim line on a billiards table. The table is examples/billiards-frictionless.json
+// (cushions as segments, six pockets, fifteen racked balls and the cue ball), loaded with carom's scene
 // library, the cue ball at rest. Dragging sets the shot (direction from the cue ball towards the
 // pointer, speed by the distance); carom answers where the cue ball first touches something
 // (World::cast_ball, the cue ball left out), how the two balls leave a ball contact
@@ -11,7 +11,7 @@ import {num, vec} from './format.js';
 import {fillReadout, slider} from './sliders.js';
 import {WorldCanvas} from './world_canvas.js';
 
-const SCENE = 'billiards.json';
+const SCENE = 'billiards-frictionless.json';
 const FRAME_TIME = 1 / 60;  // table time per frame: a time unit is a second
 // No friction: balls never stop by themselves, so a shot runs this long (table time) at most.
 const SHOT_SECONDS = 5;

@@ -21,6 +21,10 @@ void bind_scene(py::module_& m);
 void bind_science(py::module_& m);
 void bind_packing(py::module_& m);
 void bind_queries(py::module_& m);
+// The table's classes (before bind_world, whose World takes a Table) and World's table methods
+// (after it).
+void bind_table_types(py::module_& m);
+void bind_table_methods(py::module_& m);
 
 // A ball's id as Python holds it: one integer, generation above index; and back.
 std::uint64_t id_number(BallId id);

@@ -44,7 +44,9 @@ PYBIND11_MODULE(_carom, m) {
   });
   m.attr("IMMOVABLE") = carom::kImmovable;
   carom::python::bind_core(m);
+  carom::python::bind_table_types(m);
   carom::python::bind_world(m);
+  carom::python::bind_table_methods(m);
   carom::python::bind_queries(m);
   carom::python::bind_scene(m);
   carom::python::bind_packing(m);

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -183,7 +184,7 @@ class PyWorld {
 
 WorldDef make_def(const std::string& boundary, Vec2 lower, Vec2 upper, double restitution,
                   double collapse_time, double cell_size, Vec2 gravity, double rest_height,
-                  double growth_rate) {
+                  double growth_rate, const std::optional<Table>& table) {
   WorldDef def;
   def.boundary = boundary_of(boundary);
   def.lower = lower;
@@ -194,6 +195,7 @@ WorldDef make_def(const std::string& boundary, Vec2 lower, Vec2 upper, double re
   def.gravity = gravity;
   def.rest_height = rest_height;
   def.growth_rate = growth_rate;
+  def.table = table;
   return def;
 }
 
@@ -208,6 +210,7 @@ py::dict def_dict(const WorldDef& d) {
   out["gravity"] = d.gravity;
   out["rest_height"] = d.rest_height;
   out["growth_rate"] = d.growth_rate;
+  out["table"] = d.table ? py::cast(*d.table) : py::none();
   return out;
 }
 
@@ -471,14 +474,15 @@ void bind_world(py::module_& m) {
                       "A world of moving balls, walls and arcs, advanced in exact event order")
       .def(py::init([](const std::string& boundary, Vec2 lower, Vec2 upper, double restitution,
                        double collapse_time, double cell_size, Vec2 gravity, double rest_height,
-                       double growth_rate) {
+                       double growth_rate, const std::optional<Table>& table) {
              return PyWorld(World(make_def(boundary, lower, upper, restitution, collapse_time,
-                                           cell_size, gravity, rest_height, growth_rate)));
+                                           cell_size, gravity, rest_height, growth_rate, table)));
            }),
            py::kw_only(), py::arg("boundary") = "open", py::arg("lower") = Vec2{},
            py::arg("upper") = Vec2{}, py::arg("restitution") = 1.0, py::arg("collapse_time") = 0.0,
            py::arg("cell_size") = 0.0, py::arg("gravity") = Vec2{},
-           py::arg("rest_height") = WorldDef{}.rest_height, py::arg("growth_rate") = 0.0)
+           py::arg("rest_height") = WorldDef{}.rest_height, py::arg("growth_rate") = 0.0,
+           py::arg("table") = py::none())
       .def_property_readonly(
           "settings", [](const PyWorld& w) { return def_dict(w.world().def()); },
           "The keyword arguments the world was made with (its WorldDef), as a dict")
@@ -487,14 +491,22 @@ void bind_world(py::module_& m) {
           "add_ball",
           [](PyWorld& w, Vec2 position, Vec2 velocity, double radius, double mass,
              std::optional<double> restitution, std::uint64_t user_data,
-             const CollisionFilter& filter) {
-            BallDef def{position, velocity, radius, mass, restitution, user_data};
+             const CollisionFilter& filter, std::array<double, 3> spin) {
+            BallDef def{position,
+                        velocity,
+                        radius,
+                        mass,
+                        restitution,
+                        user_data,
+                        Spin{spin[0], spin[1], spin[2]}};
             return id_number(w.world().add_ball(def, filter));
           },
           py::arg("position"), py::arg("velocity") = Vec2{}, py::arg("radius") = 1.0,
           py::arg("mass") = 1.0, py::arg("restitution") = py::none(), py::arg("user_data") = 0,
           py::arg("filter") = CollisionFilter{},
-          "Adds one ball (restitution None: the world's); returns its id")
+          py::arg("spin") = std::array<double, 3>{0.0, 0.0, 0.0},
+          "Adds one ball (restitution None: the world's; spin (x, y, z) on a table only); "
+          "returns its id")
       .def("add_balls", &add_balls, py::arg("positions"), py::arg("velocities") = py::none(),
            py::arg("radii") = 1.0, py::arg("masses") = 1.0, py::arg("restitution") = py::none(),
            py::arg("user_data") = py::none(), py::arg("filter") = py::none(),

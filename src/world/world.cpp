@@ -197,6 +197,11 @@ BallId World::add_ball(const BallDef& def, const CollisionFilter& ball_filter) {
   constexpr const char* kFunction = "World::add_ball";
   validate_ball_def(kFunction, def);
   Impl& w = *impl_;
+  if (!w.table_on && def.spin != Spin{}) {
+    refuse(kFunction, "def.spin",
+           "(" + number(def.spin.x) + ", " + number(def.spin.y) + ", " + number(def.spin.z) + ")",
+           "must be zero in a world without a table (WorldDef::table)");
+  }
   const Vec2 position = w.wrap_into_cell(def.position);
   if (w.def.boundary == Boundary::periodic) {
     // Three cells of at least a diameter per axis keep every neighbour cell distinct.
@@ -248,9 +253,6 @@ BallId World::add_ball(const BallDef& def, const CollisionFilter& ball_filter) {
     state.spin = {def.spin.x, def.spin.y};
     state.twist = def.spin.z;
     w.set_on_table(slot, state, w.time, false);
-  } else if (def.spin != Spin{}) {
-    refuse(kFunction, "def.spin", detail::vector_text({def.spin.x, def.spin.y}),
-           "must be zero in a world without a table (WorldDef::table)");
   }
   ++b.version;
   w.largest_radius = std::max(w.largest_radius, def.radius);

@@ -668,9 +668,10 @@ void World::Impl::load_table(ByteReader& in) {
     slot.acceleration = in.vec2("ball table acceleration");
     slot.ends = in.f64("ball state end");
     const std::uint8_t state = in.u8("ball motion state");
-    if (!balls[i].alive()) continue;
-    if (state > static_cast<std::uint8_t>(detail::TableState::stationary) || !finite(slot.spin) ||
-        !std::isfinite(slot.twist) || !finite(slot.acceleration) || std::isnan(slot.ends)) {
+    const bool bad_state = state > static_cast<std::uint8_t>(detail::TableState::stationary);
+    // (A free slot keeps what its last ball left, so that it saves again to the same bytes.)
+    if (bad_state || (balls[i].alive() && (!finite(slot.spin) || !std::isfinite(slot.twist) ||
+                                           !finite(slot.acceleration) || std::isnan(slot.ends)))) {
       in.inconsistent("table state of ball slot " + std::to_string(i), std::to_string(state),
                       "a motion state (0 to 3) with finite spin and acceleration");
     }

@@ -25,9 +25,9 @@ def velocity(speed_index, angle_fraction, axis=False):
     return bytes([speed_index]) + word(angle_fraction) + bytes([0 if axis else 1])
 
 
-def head(boundary, restitution_index=0, fixed_cell=False, gravity=False, growth=False):
+def head(boundary, restitution_index=0, fixed_cell=False, gravity=False, growth=False, table=False):
     return bytes([boundary + 3 * restitution_index + (18 if gravity else 0) + (36 if growth else 0) +
-                  (0x80 if fixed_cell else 0)])
+                  (72 if table else 0) + (0x80 if fixed_cell else 0)])
 
 
 def walls(*encoded):
@@ -99,6 +99,13 @@ def bad(which, extra=b""):
     return bytes([BAD, which]) + extra
 
 
+def strike(ball, speed, direction, elevation=0.0, reach=0.0, around=0.0, spin_only=False):
+    """On a table, a velocity call that strikes ball `ball` (fractions of the harness's ranges), or
+    with spin_only sets its spin instead."""
+    return (bytes([VELOCITY, 0, ball]) + word(speed) + word(direction) + word(elevation) + word(reach)
+            + word(around) + bytes([0 if spin_only else 1]) + word(0.8) + word(0.3) + word(0.6))
+
+
 def collisions(count, unlimited=False, limit_index=2):
     return bytes([COLLISIONS, count | (0x80 if unlimited else 0), limit_index])
 
@@ -156,6 +163,13 @@ SEEDS = {
     "moving_paddle_growth": head(BOX, 0, growth=True)
     + walls(moving_segment((4, 3), (16, 3), 0.5, 0.7, 0.5, 0.5, 0.5, 0.4))
     + gas(10, 1) + step(6) + bytes([SAVE]) + step(7),
+    # A billiards table: cushions of every kind, a rack struck with top, back and side spin, a spin
+    # set by hand, saved mid-shot; and a table with pockets that remove balls.
+    "table_break": head(BOX, 1, table=True) + walls(segment((1, 1), (19, 1)), arc((10, 10), 9.0, 0.1, 5) + word(0.3))
+    + gas(10, 0) + strike(0, 0.9, 0.1, 0.0, 0.3, 0.25) + step(5) + strike(3, 0.5, 0.6, 0.4, 0.8, 0.75)
+    + bytes([SAVE]) + step(6) + strike(5, 0.0, 0.0, spin_only=True) + collisions(8, True) + step(7),
+    "table_pockets": head(BOX, 0, table=True) + walls(sensor_disc((2, 2), 1.0, True), sensor_disc((18, 18), 1.0, True))
+    + gas(8, 2) + strike(1, 1.0, 0.6, 0.2, 0.9, 0.5) + step(6) + bytes([SAVE]) + step(7) + collisions(8, True),
     "sensors_growth": head(BOX, 0, growth=True) + walls(sensor_disc((10, 10), 3.0), sensor_segment((3, 3), (17, 3)))
     + gas(10, 1) + step(6) + bytes([SAVE]) + step(7),
 }

@@ -5,13 +5,15 @@
 // contact recording on and off, and a save → load round trip; in an open world, a box and a
 // periodic cell, with segments and arcs in the first two (some of them moving: translating,
 // turning about a pivot, for a while or for ever), and sensors (segments, arcs and discs, some
-// removing the balls that enter). After every call it checks:
+// removing the balls that enter); on a billiards table (spins, cue strikes, cushions) too. After
+// every call it checks:
 // - the only exception is carom::InvalidArgument, thrown exactly when an argument the harness
 //   knows to be invalid was passed, or when a placement overlaps (then the world is unchanged);
 // - World::audit finds no overlap and no ball outside the box; every number is finite;
 // - time never goes back, contacts lie in the call's time range in the documented order;
 // - elastic worlds keep their energy (kinetic, plus potential under gravity) and inelastic ones
-//   never gain any (to rounding);
+//   never gain any (to rounding), on a table the spins' energy counted in;
+// - a table's changes of motion state lie in the call's time range in time order;
 // - a loaded world saves to the same bytes and, given the next call, agrees bit for bit with
 //   the world it was saved from;
 // - the queries (a ray's every hit, a ball cast, a circle and a box from each of a few balls)
@@ -24,7 +26,7 @@
 //   byte 0: boundary (open, box, periodic), the world's restitution and gravity (none, or, in an
 //   open world or a box, down at 9.81 with balls resting and sliding) or, without gravity,
 //   growth (radii growing at 0.05 of themselves a time unit; energy is then pumped in, not
-//   checked);
+//   checked), or a table (carom::Table's defaults; half the velocity calls strike or spin);
 //   then up to kMaxWalls walls (non-periodic worlds), then up to kMaxCalls calls, one opcode
 //   byte each followed by its arguments. Counts, sizes and speeds are bounded so that one input
 //   runs in milliseconds; the call that brings the world's contacts to kMaxContacts is stopped
@@ -167,6 +169,10 @@ Snapshot snapshot(const World& world) {
     const Vec2 p = world.position(id);
     const Vec2 v = world.velocity(id);
     s.numbers.insert(s.numbers.end(), {p.x, p.y, v.x, v.y, world.radius(id), world.mass(id)});
+    if (world.def().table) {
+      const carom::Spin w = world.spin(id);
+      s.numbers.insert(s.numbers.end(), {w.x, w.y, w.z});
+    }
   }
   return s;
 }
@@ -202,6 +208,11 @@ class Harness {
     // and a run of a few calls can take minutes of cell crossings: the reference tests cover it.)
     if ((choice / 18) % 2 == 1 && def_.boundary != Boundary::periodic) def_.gravity = {0.0, -9.81};
     if ((choice / 36) % 2 == 1 && def_.gravity == Vec2{}) def_.growth_rate = 0.05;
+    // A billiards table (neither gravity nor growth): balls slide, roll, spin and stop, and every
+    // wall is a cushion. Energy, spin's included, then only falls.
+    if (choice / 72 == 1 && def_.gravity == Vec2{} && def_.growth_rate == 0.0) {
+      def_.table = carom::Table{};
+    }
     if ((head & 0x80) != 0) def_.cell_size = 4.0;  // a fixed grid as well as the chosen one
     world_.emplace(def_);
     install_stop_condition(*world_, 0);
@@ -209,7 +220,7 @@ class Harness {
                 static_cast<int>(def_.boundary), def_.restitution, def_.cell_size, def_.gravity.y,
                 def_.growth_rate);
     driven_ = def_.growth_rate != 0.0;  // growth pumps energy in
-    elastic_ = def_.restitution == 1.0;
+    elastic_ = def_.restitution == 1.0 && !def_.table;
   }
 
   void run() {
@@ -289,6 +300,11 @@ class Harness {
   // (bit 7: for a while rather than for ever), its motion read from the input.
   void set_motion(carom::WallId wall, std::uint8_t kind, Vec2 near) {
     if ((kind & 64) == 0) return;
+    if (def_.table) {
+      carom::WallMotion refused;
+      refused.velocity = {1.0, 0.0};
+      return expect_refusal([&](World& w) { w.set_wall_motion(wall, refused); });
+    }
     carom::WallMotion motion;
     motion.velocity = {2.0 * (in_.unit() - 0.5), 2.0 * (in_.unit() - 0.5)};
     motion.angular_velocity = 8.0 * (in_.unit() - 0.5);
@@ -451,6 +467,8 @@ class Harness {
   void set_velocity() {
     // A growing world is driven anyway; half its velocity calls are a thermostat's step instead.
     if (def_.growth_rate != 0.0 && in_.byte() % 2 == 0) return set_temperature();
+    // On a table half of them are a cue's strike or a spin set instead.
+    if (def_.table && in_.byte() % 2 == 0) return strike();
     const BallId id = some_ball();
     Vec2 v = velocity(in_);
     if (id.is_null()) return;
@@ -548,6 +566,12 @@ class Harness {
       if (i > 0) check(contacts[i - 1].time <= c.time, "contacts out of time order");
     }
     check_sensor_events(start, end);
+    double motion_before = start;
+    for (const carom::MotionEvent& e : world().motion_events()) {
+      check(e.time >= motion_before && e.time <= end, "a motion event out of order or range");
+      check(e.from != e.to, "a motion event that changes nothing");
+      motion_before = e.time;
+    }
     // A ball placed into or out of a sensor between runs changes at the next run's start: the
     // states agree with the places once a run has passed that instant.
     sensors_settled_ = end > start;
@@ -674,6 +698,21 @@ class Harness {
     }
   }
 
+  // A call the documentation refuses: it must throw InvalidArgument and change nothing.
+  template <typename Call>
+  void expect_refusal(Call call) {
+    const Snapshot before = snapshot(world());
+    bool threw = false;
+    try {
+      call(world());
+    } catch (const carom::InvalidArgument& error) {
+      threw = true;
+      check(std::string(error.what()).find("carom::") == 0, "a message without carom::");
+    }
+    check(threw, "an invalid argument was accepted");
+    check(snapshot(world()) == before, "a refused call changed the world");
+  }
+
   // Arguments the documentation calls invalid: each must throw InvalidArgument and change
   // nothing.
   void bad_call() {
@@ -720,7 +759,56 @@ class Harness {
     check(snapshot(world()) == before, "a refused call changed the world");
   }
 
-  void reset_energy() { energy_ = world().kinetic_energy() + world().potential_energy(); }
+  void reset_energy() { energy_ = total_energy(); }
+
+  // The kinetic energy (on a table with the spins', ½·(2/5)·m·R²·|ω|² a ball) plus gravity's.
+  [[nodiscard]] double total_energy() {
+    double energy = world().kinetic_energy() + world().potential_energy();
+    if (!def_.table) return energy;
+    for (const BallId id : world().balls()) {
+      if (world().mass(id) == carom::kImmovable) continue;
+      const carom::Spin w = world().spin(id);
+      const double r = world().radius(id);
+      energy += 0.2 * world().mass(id) * r * r * (w.x * w.x + w.y * w.y + w.z * w.z);
+    }
+    return energy;
+  }
+
+  // A cue strikes a ball (the tip anywhere on the ball's face, the cue tilted up to 1.2 rad), or
+  // its spin is set; an immovable ball refuses both.
+  void strike() {
+    const BallId id = some_ball();
+    if (id.is_null()) return;
+    const double r = world().radius(id);
+    carom::CueStrike cue;
+    cue.speed = 5.0 * in_.unit();
+    cue.direction = 2.0 * std::numbers::pi * in_.unit();
+    cue.elevation = 1.2 * in_.unit();
+    const double reach = 0.95 * r * in_.unit();
+    const double around = 2.0 * std::numbers::pi * in_.unit();
+    cue.side = reach * std::cos(around);
+    cue.height = reach * std::sin(around);
+    const bool spin_only = in_.byte() % 4 == 0;
+    const carom::Spin spin{40.0 * (in_.unit() - 0.5) / r, 40.0 * (in_.unit() - 0.5) / r,
+                           40.0 * (in_.unit() - 0.5) / r};
+    const bool movable = world().mass(id) != carom::kImmovable;
+    CAROM_TRACE("%s(%u)\n", spin_only ? "set_spin" : "strike", id.index);
+    const auto call = [&](World& w) {
+      if (spin_only) {
+        w.set_spin(id, spin);
+      } else {
+        w.strike(id, cue);
+      }
+    };
+    if (!movable) return expect_refusal(call);
+    try {
+      call(world());
+    } catch (const carom::InvalidArgument& error) {
+      fail("a valid strike or spin was refused:", error.what());
+    }
+    if (spin_only) check(world().spin(id) == spin, "set_spin did not set it");
+    reset_energy();
+  }
 
   void forget_sensor_pairs(BallId id) {
     for (auto pair = inside_.begin(); pair != inside_.end();) {
@@ -820,7 +908,7 @@ class Harness {
       }
     }
     // Under gravity the total, whose rounding is that of its larger parts.
-    const double energy = w.kinetic_energy() + w.potential_energy();
+    const double energy = total_energy();
     check(std::isfinite(energy), "the energy is not finite");
     const double scale = w.kinetic_energy() + std::abs(w.potential_energy());
     const double allowed = kEnergyTolerance * std::max({scale, std::abs(energy_), 1e-300});

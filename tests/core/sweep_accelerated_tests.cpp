@@ -4,6 +4,7 @@
 // (reference_distance.hpp: dense sampling of the distance, then bisection; no shared code).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -11,6 +12,7 @@
 
 #include "carom/error.hpp"
 #include "carom/sweep.hpp"
+#include "core/table_motion.hpp"
 #include "long_tests.hpp"
 #include "random_cases.hpp"
 #include "reference_distance.hpp"
@@ -325,6 +327,37 @@ TEST(SweepAcceleratedReference, BallBall) {
     const Motion ma{random.move_towards(a.center, b.center, 4.0), random_acceleration(random)};
     const Motion mb{random.point(6.0), random_acceleration(random)};
     return Case{time_of_impact_ball_ball(a, ma, b, mb, 1.0), [=](double t) {
+                  return distance(at(a.center, ma.velocity, ma.acceleration, t),
+                                  at(b.center, mb.velocity, mb.acceleration, t)) -
+                         a.radius - b.radius;
+                }};
+  });
+}
+
+// Two pool balls on a cloth, each in the state its velocity and spin put it in (sliding with any
+// spin, or rolling), each on its own parabola until the first of the two states ends: the gaps a
+// table world asks about, at a table's sizes (57 mm balls, accelerations of μ·g).
+TEST(SweepAcceleratedReference, PoolBallsInTheirTableStates) {
+  const detail::Cloth cloth{9.81, 0.2, 0.01, 0.044};
+  constexpr double kPoolRadius = 0.028575;
+  const auto table_ball = [&](RandomCases& random, Vec2 velocity) {
+    const bool rolling = random.uniform(0.0, 1.0) < 0.3;
+    const Vec2 spin =
+        rolling ? Vec2{-velocity.y, velocity.x} * (1.0 / kPoolRadius) : random.point(150.0);
+    return detail::TableBall{velocity, spin, random.uniform(-50.0, 50.0), kPoolRadius};
+  };
+  compare_random_cases(29, reference_cases(), [&](RandomCases& random) {
+    const Ball a{random.point(0.4), kPoolRadius};
+    const Ball b{random.point(0.4), kPoolRadius};
+    const detail::TableBall ta = table_ball(random, random.move_towards(a.center, b.center, 3.0));
+    const detail::TableBall tb = table_ball(random, random.point(1.0));
+    const detail::StateMotion sa = detail::state_motion(ta, cloth);
+    const detail::StateMotion sb = detail::state_motion(tb, cloth);
+    const Motion ma{ta.velocity, sa.acceleration};
+    const Motion mb{tb.velocity, sb.acceleration};
+    const double horizon = std::min({1.0, sa.duration, sb.duration});
+    return Case{time_of_impact_ball_ball(a, ma, b, mb, horizon), [=](double t) {
+                  if (t > horizon) return 1.0;  // (past the states' ends: not this query's)
                   return distance(at(a.center, ma.velocity, ma.acceleration, t),
                                   at(b.center, mb.velocity, mb.acceleration, t)) -
                          a.radius - b.radius;

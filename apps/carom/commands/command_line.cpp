@@ -22,6 +22,7 @@
 #include "commands/query_command.hpp"
 #include "commands/render_command.hpp"
 #include "commands/run_command.hpp"
+#include "commands/shot_command.hpp"
 #include "commands/sweep_command.hpp"
 #include "options/exit_codes.hpp"
 #include "options/usage_error.hpp"
@@ -109,7 +110,7 @@ int parse_and_run(int argc, char** argv) {
       carom::cli::add_gas_command(app),   carom::cli::add_eos_command(app),
       carom::cli::add_run_command(app),   carom::cli::add_info_command(app),
       carom::cli::add_query_command(app), carom::cli::add_render_command(app),
-      carom::cli::add_pack_command(app)};
+      carom::cli::add_pack_command(app),  carom::cli::add_shot_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -251,10 +251,11 @@ void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequ
     trails->record(scene_world, {});
   }
   std::vector<ContactEvent> contacts;
-  if (trails && scene.world.gravity != Vec2{}) {
-    // Under gravity a ball flies on parabolas: the trail is drawn through its centre at
-    // kTrailPieces even times across the window as well (a chord then strays from the parabola by
-    // at most |g|·(window/kTrailPieces)²/8). Splitting the run into steps changes none of it.
+  if (trails && (scene.world.gravity != Vec2{} || scene.world.table)) {
+    // Under gravity, and on a table's cloth, a ball moves on parabolas: the trail is drawn
+    // through its centre at kTrailPieces even times across the window as well (a chord then
+    // strays from the parabola by at most |a|·(window/kTrailPieces)²/8). Splitting the run into
+    // steps changes none of it.
     constexpr int kTrailPieces = 64;
     for (int k = 1; k <= kTrailPieces; ++k) {
       contacts.clear();

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "carom/error.hpp"
+#include "carom/pool_table.hpp"
 #include "carom/scene.hpp"
 
 namespace carom::python {
@@ -184,6 +186,35 @@ void bind_scene(py::module_& m) {
       "The scene's World and the ids of its balls in scene order (generated balls after the "
       "explicit ones). Pockets are immovable balls whose contacts end a run (stop_reason "
       "\"stop_condition\"); run_scene removes the balls they take.");
+  m.def(
+      "pool_table_scene",
+      [](const std::string& size, const std::string& rack, double ball_radius, double ball_mass,
+         double rack_gap) {
+        PoolTableSpec spec;
+        spec.size = size == "7ft"   ? PoolTableSize::seven_foot
+                    : size == "8ft" ? PoolTableSize::eight_foot
+                                    : PoolTableSize::nine_foot;
+        if (size != "7ft" && size != "8ft" && size != "9ft") {
+          throw InvalidArgument("pool_table_scene", "size", size, "must be 7ft, 8ft or 9ft");
+        }
+        spec.rack = rack == "nine"   ? PoolRack::nine_ball
+                    : rack == "none" ? PoolRack::none
+                                     : PoolRack::eight_ball;
+        if (rack != "eight" && rack != "nine" && rack != "none") {
+          throw InvalidArgument("pool_table_scene", "rack", rack,
+                                "must be \"eight\", \"nine\" or \"none\"");
+        }
+        spec.ball_radius = ball_radius;
+        spec.ball_mass = ball_mass;
+        spec.rack_gap = rack_gap;
+        return pool_table_scene(spec);
+      },
+      py::kw_only(), py::arg("size") = "9ft", py::arg("rack") = "eight",
+      py::arg("ball_radius") = PoolTableSpec{}.ball_radius,
+      py::arg("ball_mass") = PoolTableSpec{}.ball_mass,
+      py::arg("rack_gap") = PoolTableSpec{}.rack_gap,
+      "A standard pool table as a scene (docs/pool.md, \"Standard tables\"): size \"7ft\", "
+      "\"8ft\" or \"9ft\", rack \"eight\", \"nine\" or \"none\"");
   m.def("run_scene", &run_scene, py::arg("scene"), py::arg("until"), py::arg("frame_interval"),
         "Runs the scene, with its pockets and thermostat, to scene time `until`, a frame every "
         "frame_interval: a dict of times (F,), positions and velocities (F, N, 2), radii (F, N) "

@@ -71,3 +71,14 @@ def test_the_example_break_is_struck_by_its_shot_and_comes_to_rest():
     assert np.all(last[on_table] == 0.0)
     moved = np.linalg.norm(run["positions"][-1][on_table] - run["positions"][0][on_table], axis=1)
     assert np.count_nonzero(moved) >= 10
+
+
+def test_a_standard_table_is_a_scene_a_shot_runs_on():
+    scene = carom.pool_table_scene(size="8ft", rack="nine")
+    assert scene.ball_count == 10 and scene.pocket_count == 6
+    world, ids = carom.make_world(scene)
+    world.strike(int(ids[0]), speed=4.0, height=0.01)
+    world.run_collisions(1_000_000)
+    assert world.at_rest()
+    with pytest.raises(carom.InvalidArgument):
+        carom.pool_table_scene(size="10ft")

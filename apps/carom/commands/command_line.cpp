@@ -24,6 +24,7 @@
 #include "commands/run_command.hpp"
 #include "commands/shot_command.hpp"
 #include "commands/sweep_command.hpp"
+#include "commands/table_command.hpp"
 #include "options/exit_codes.hpp"
 #include "options/usage_error.hpp"
 #include "system/examples_folder.hpp"
@@ -110,7 +111,8 @@ int parse_and_run(int argc, char** argv) {
       carom::cli::add_gas_command(app),   carom::cli::add_eos_command(app),
       carom::cli::add_run_command(app),   carom::cli::add_info_command(app),
       carom::cli::add_query_command(app), carom::cli::add_render_command(app),
-      carom::cli::add_pack_command(app),  carom::cli::add_shot_command(app)};
+      carom::cli::add_pack_command(app),  carom::cli::add_shot_command(app),
+      carom::cli::add_table_command(app)};
 
   try {
     app.parse(argc, argv);

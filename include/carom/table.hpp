@@ -57,6 +57,21 @@ enum class MotionState : std::uint8_t {
   stationary  // at rest
 };
 
+// The state's name as text and files write it: "sliding", "rolling", "spinning", "stationary".
+[[nodiscard]] constexpr const char* motion_state_name(MotionState state) noexcept {
+  switch (state) {
+    case MotionState::sliding:
+      return "sliding";
+    case MotionState::rolling:
+      return "rolling";
+    case MotionState::spinning:
+      return "spinning";
+    case MotionState::stationary:
+      break;
+  }
+  return "stationary";
+}
+
 // A cue's strike: the cue moving at `speed` along `direction` (radians, in the table's plane)
 // tilted `elevation` above the table (radians, [0, π/2)), its tip meeting the ball `side` to the
 // right of its centre and `height` above it, both measured across the cue as the player sees the

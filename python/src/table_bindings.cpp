@@ -12,20 +12,6 @@
 namespace carom::python {
 namespace {
 
-const char* state_name(MotionState state) {
-  switch (state) {
-    case MotionState::sliding:
-      return "sliding";
-    case MotionState::rolling:
-      return "rolling";
-    case MotionState::spinning:
-      return "spinning";
-    case MotionState::stationary:
-      break;
-  }
-  return "stationary";
-}
-
 std::string table_repr(const Table& t) {
   const auto number = [](double value) { return py::repr(py::float_(value)).cast<std::string>(); };
   return "carom.Table(g=" + number(t.g) + ", sliding_friction=" + number(t.sliding_friction) +
@@ -104,15 +90,15 @@ void bind_table_types(py::module_& m) {
       .def_property_readonly(
           "ball", [](const MotionEvent& e) { return id_number(e.ball); }, "The ball's id")
       .def_property_readonly(
-          "from_state", [](const MotionEvent& e) { return state_name(e.from); },
+          "from_state", [](const MotionEvent& e) { return motion_state_name(e.from); },
           "\"sliding\", \"rolling\", \"spinning\" or \"stationary\"")
       .def_property_readonly(
-          "to_state", [](const MotionEvent& e) { return state_name(e.to); },
+          "to_state", [](const MotionEvent& e) { return motion_state_name(e.to); },
           "\"sliding\", \"rolling\", \"spinning\" or \"stationary\"")
       .def("__repr__", [](const MotionEvent& e) {
         return "carom.MotionEvent(time=" + py::repr(py::float_(e.time)).cast<std::string>() +
                ", ball=" + std::to_string(id_number(e.ball)) + ", from_state='" +
-               state_name(e.from) + "', to_state='" + state_name(e.to) + "')";
+               motion_state_name(e.from) + "', to_state='" + motion_state_name(e.to) + "')";
       });
 }
 
@@ -129,7 +115,7 @@ void bind_table_methods(py::module_& m) {
   add_world_method(
       world_class, "motion_state",
       [](py::handle self, std::uint64_t id) {
-        return state_name(unwrap_world(self).motion_state(ball_id(id)));
+        return motion_state_name(unwrap_world(self).motion_state(ball_id(id)));
       },
       py::arg("id"),
       "On a table, a ball's state: \"sliding\", \"rolling\", \"spinning\" or \"stationary\"");

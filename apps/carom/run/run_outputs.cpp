@@ -109,24 +109,6 @@ void FrameWriter::write_frame(const SceneWorld& built) {
   ++frames_;
 }
 
-namespace {
-
-const char* motion_state_name(MotionState state) {
-  switch (state) {
-    case MotionState::sliding:
-      return "sliding";
-    case MotionState::rolling:
-      return "rolling";
-    case MotionState::spinning:
-      return "spinning";
-    case MotionState::stationary:
-      break;
-  }
-  return "stationary";
-}
-
-}  // namespace
-
 void EventWriter::write(const std::vector<ContactEvent>& contacts, const BallDirectory& directory,
                         const SceneWorld& built, std::size_t wall_offset) {
   buffer_.clear();

@@ -134,11 +134,11 @@ bool World::Impl::resolve_pair_on_table(std::uint32_t i, std::uint32_t j, double
   TableBall first = table_ball(i);
   TableBall second = table_ball(j);
   bool resolved = false;
-  const double press = dot(acceleration_of(i) - acceleration_of(j), normal);
+  const Vec2 relative_acceleration = acceleration_of(i) - acceleration_of(j);
+  const double press = dot(relative_acceleration, normal);
   const double reach = radius_of(i) + radius_of(j);
-  const bool pressed =
-      press > 0.0 && detail::held_or_approaching(a.velocity, b.velocity,
-                                                 acceleration_of(i) - acceleration_of(j), normal);
+  const bool pressed = press > 0.0 && detail::held_or_approaching(a.velocity, b.velocity,
+                                                                  relative_acceleration, normal);
   if (pressed && approach < hold_speed(press, def.rest_height, 0.5 * reach)) {
     // Slow, and pressed together: held, rolling on side by side (docs/engine.md, "The table").
     const Vec2 before = a.velocity;
@@ -179,9 +179,10 @@ bool World::Impl::resolve_wall_on_table(std::uint32_t i, std::uint32_t wall, dou
   const double approach = dot(a.velocity, normal);
   TableBall ball = table_ball(i);
   bool resolved = false;
-  const double press = dot(acceleration_of(i), normal);
+  const Vec2 acceleration = acceleration_of(i);
+  const double press = dot(acceleration, normal);
   const bool pressed =
-      press > 0.0 && detail::held_or_approaching(a.velocity, {}, acceleration_of(i), normal);
+      press > 0.0 && detail::held_or_approaching(a.velocity, {}, acceleration, normal);
   if (pressed && approach < hold_speed(press, def.rest_height, radius_of(i))) {
     detail::roll_along(ball, normal);
     if (approach > 0.0) {

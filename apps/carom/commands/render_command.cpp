@@ -17,6 +17,7 @@
 #include "drawing/ball_colours.hpp"
 #include "drawing/cairo_picture.hpp"
 #include "drawing/ffmpeg_pipe.hpp"
+#include "drawing/picture_file.hpp"
 #include "drawing/render_animation.hpp"
 #include "drawing/render_plot.hpp"
 #include "drawing/scene_picture.hpp"
@@ -35,7 +36,6 @@
 namespace carom::cli {
 namespace {
 
-constexpr int kPictureWidth = 960;    // pixels: a PNG picture's default width
 constexpr int kAnimationWidth = 640;  // smaller: a GIF grows with every pixel of every frame
 // More frames than this is almost surely a typo in --until or --fps (an hour at 30 fps is
 // 108000): refused before a long run.
@@ -214,13 +214,6 @@ void check_outputs(const RenderOptions& o, RenderRequest& r) {
   }
 }
 
-bool scene_gives_colours(const Scene& scene) {
-  return std::any_of(scene.balls.begin(), scene.balls.end(),
-                     [](const SceneBall& b) { return b.color.has_value(); }) ||
-         std::any_of(scene.generators.begin(), scene.generators.end(),
-                     [](const SceneGenerator& g) { return g.color.has_value(); });
-}
-
 void advance_to(SceneWorld& scene_world, double time, std::vector<ContactEvent>* contacts) {
   if (time > scene_world.world.time()) {
     step_scene(scene_world, time - scene_world.world.time(), contacts);
@@ -283,22 +276,15 @@ void render_picture(const Scene& scene, const RenderOptions& o, const RenderRequ
   if (trails) style.trails = &*trails;
   const ScenePicture picture = draw_scene(scene_world, style);
 
-  if (*r.picture == PictureFormat::svg) {
-    write_or_throw("--out", o.out, scene_svg(picture, style.arrow_seconds));
-    report_stream(o) << "picture: " << o.out << " (t = " << rounded(scene_world.time()) << " "
-                     << scene.units.time << ")\n";
-    return;
-  }
-  const ImageLayout layout = layout_image(picture.view, r.width.value_or(kPictureWidth),
-                                          picture.legend.has_value(), false);
-  CairoImage image(layout.width, layout.height);
-  paint_picture(image, layout, picture);
-  const std::optional<std::string> png = image.png();
-  if (!png) throw std::runtime_error("Cairo could not encode the PNG picture");
-  write_or_throw("--out", o.out, *png);
-  report_stream(o) << "picture: " << o.out << " (" << layout.width << "x" << layout.height
-                   << " pixels, t = " << rounded(scene_world.time()) << " " << scene.units.time
-                   << ")\n";
+  const bool svg = *r.picture == PictureFormat::svg;
+  const PictureFile file =
+      encode_picture(picture, svg, r.width.value_or(kPictureWidth), style.arrow_seconds);
+  write_or_throw("--out", o.out, file.bytes);
+  report_stream(o) << "picture: " << o.out << " ("
+                   << (svg ? ""
+                           : std::to_string(file.width) + "x" + std::to_string(file.height) +
+                                 " pixels, ")
+                   << "t = " << rounded(scene_world.time()) << " " << scene.units.time << ")\n";
 }
 
 int run(const RenderOptions& o) {

@@ -161,24 +161,11 @@ RunPlan parse(const RunOptions& o) {
     throw UsageError("--resume", o.resume, "a checkpoint is read from a file, not standard input");
   }
   // Every output is checked before any work, and no two may be the same file.
-  const std::vector<std::pair<const char*, const std::string*>> outputs{
-      {"--frames", &o.frames},
-      {"--events", &o.events},
-      {"--save", &o.save},
-      {"--checkpoint", &o.checkpoint}};
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const std::string& path = *outputs[i].second;
-    if (path.empty()) continue;
-    for (std::size_t j = 0; j < i; ++j) {
-      if (same_output(*outputs[j].second, path)) {
-        throw UsageError(outputs[i].first, path,
-                         std::string("the same file as ") + outputs[j].first);
-      }
-    }
-    if (const auto problem = check_output(path)) {
-      throw UsageError(outputs[i].first, path, "cannot be written: " + *problem);
-    }
-  }
+  const NamedOutput outputs[] = {{"--frames", &o.frames},
+                                 {"--events", &o.events},
+                                 {"--save", &o.save},
+                                 {"--checkpoint", &o.checkpoint}};
+  check_distinct_outputs(outputs);
   if (!o.checkpoint.empty() && !replaced_by_rename(o.checkpoint)) {
     throw UsageError("--checkpoint", o.checkpoint,
                      "a checkpoint is a file replaced at every write (the one before kept as "

@@ -13,9 +13,8 @@
 
 #include "carom/scene.hpp"
 #include "drawing/ball_colours.hpp"
-#include "drawing/cairo_picture.hpp"
+#include "drawing/picture_file.hpp"
 #include "drawing/scene_picture.hpp"
-#include "drawing/scene_svg.hpp"
 #include "drawing/trail_recorder.hpp"
 #include "options/exit_codes.hpp"
 #include "options/option_value.hpp"
@@ -29,7 +28,6 @@
 namespace carom::cli {
 namespace {
 
-constexpr int kPictureWidth = 960;  // pixels
 // The paths are drawn through each ball's centre at every contact and at this step of table
 // time as well: a sliding ball's parabola then strays from the chords by at most μs·g·step²/8
 // (0.4 mm at the defaults).
@@ -103,9 +101,7 @@ Scene scene_with_shot(const ShotOptions& o) {
 void write_picture(const ShotOptions& o, const Scene& scene, const SceneWorld& sw,
                    const TrailRecorder& paths) {
   PictureStyle style;
-  const bool colours = std::any_of(scene.balls.begin(), scene.balls.end(),
-                                   [](const SceneBall& b) { return b.color.has_value(); });
-  style.mode = colours ? ColourMode::name : ColourMode::speed;
+  style.mode = scene_gives_colours(scene) ? ColourMode::name : ColourMode::speed;
   style.top_speed = 1.0;
   style.name_colours = named_ball_colours(sw.scene, sw.scene.balls, o.scene);
   ViewBox seen = balls_box(sw);
@@ -114,19 +110,9 @@ void write_picture(const ShotOptions& o, const Scene& scene, const SceneWorld& s
   style.title = std::filesystem::path(scene_source_name(o.scene)).filename().string();
   style.trails = &paths;
   const ScenePicture picture = draw_scene(sw, style);
-  std::string bytes;
-  if (o.out.ends_with(".svg")) {
-    bytes = scene_svg(picture, std::nullopt);
-  } else {
-    const ImageLayout layout =
-        layout_image(picture.view, kPictureWidth, picture.legend.has_value(), false);
-    CairoImage image(layout.width, layout.height);
-    paint_picture(image, layout, picture);
-    const std::optional<std::string> png = image.png();
-    if (!png) throw std::runtime_error("Cairo could not encode the PNG picture");
-    bytes = *png;
-  }
-  if (const auto problem = write_output(o.out, bytes)) throw std::runtime_error(*problem);
+  const PictureFile file =
+      encode_picture(picture, o.out.ends_with(".svg"), kPictureWidth, std::nullopt);
+  if (const auto problem = write_output(o.out, file.bytes)) throw std::runtime_error(*problem);
 }
 
 int run(const ShotOptions& o) {
@@ -135,21 +121,8 @@ int run(const ShotOptions& o) {
   if (!o.out.empty() && !o.out.ends_with(".png") && !o.out.ends_with(".svg")) {
     throw UsageError("--out", o.out, "the picture's name must end in .png or .svg");
   }
-  const std::vector<std::pair<const char*, const std::string*>> outputs{
-      {"--events", &o.events}, {"--out", &o.out}, {"--save", &o.save}};
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const std::string& path = *outputs[i].second;
-    if (path.empty()) continue;
-    for (std::size_t j = 0; j < i; ++j) {
-      if (same_output(*outputs[j].second, path)) {
-        throw UsageError(outputs[i].first, path,
-                         std::string("the same file as ") + outputs[j].first);
-      }
-    }
-    if (const auto problem = check_output(path)) {
-      throw UsageError(outputs[i].first, path, "cannot be written: " + *problem);
-    }
-  }
+  const NamedOutput outputs[] = {{"--events", &o.events}, {"--out", &o.out}, {"--save", &o.save}};
+  check_distinct_outputs(outputs);
   const Scene scene = scene_with_shot(o);
   SceneWorld sw = make_world(scene);
   const StopOnSignals stop_on_signals;

@@ -61,6 +61,13 @@ Rgb speed_colour(double fraction) {
   return {a.r + (b.r - a.r) * w, a.g + (b.g - a.g) * w, a.b + (b.b - a.b) * w};
 }
 
+bool scene_gives_colours(const Scene& scene) {
+  return std::any_of(scene.balls.begin(), scene.balls.end(),
+                     [](const SceneBall& b) { return b.color.has_value(); }) ||
+         std::any_of(scene.generators.begin(), scene.generators.end(),
+                     [](const SceneGenerator& g) { return g.color.has_value(); });
+}
+
 std::vector<Rgb> named_ball_colours(const Scene& scene, const std::vector<SceneBall>& balls,
                                     std::string_view scene_file) {
   // Checked where they are written, so the message names the field the user typed.

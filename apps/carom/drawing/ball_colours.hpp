@@ -24,6 +24,10 @@ enum class ColourMode {
 // Immovable balls have no speed worth showing: they are drawn in this grey in either mode.
 inline constexpr Rgb kImmovableColour = rgb_from_hex(0x808080);
 
+// Whether the scene colours any ball (a ball's or a generator's "color"): pictures then draw the
+// balls in their own colours rather than by speed.
+[[nodiscard]] bool scene_gives_colours(const Scene& scene);
+
 // The colour of each of the scene's expanded balls (as from expand_balls) in name mode: its own
 // colour; else a colour picked by its name (the part before '#', so NAME#1 and NAME#2 match);
 // else grey. Throws carom::SceneError naming the field (balls[i].color or generators[g].color)

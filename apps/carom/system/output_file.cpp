@@ -231,6 +231,22 @@ void refuse_standard_output_as_folder(const char* option, const std::string& nam
   }
 }
 
+void check_distinct_outputs(std::span<const NamedOutput> outputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string& path = *outputs[i].name;
+    if (path.empty()) continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (same_output(*outputs[j].name, path)) {
+        throw UsageError(outputs[i].option, path,
+                         std::string("the same file as ") + outputs[j].option);
+      }
+    }
+    if (const auto problem = check_output(path)) {
+      throw UsageError(outputs[i].option, path, "cannot be written: " + *problem);
+    }
+  }
+}
+
 bool same_output(const std::string& a, const std::string& b) {
   if (a == kStandardOutput || b == kStandardOutput) return a == b;
   if (!replaced_by_rename(a) || !replaced_by_rename(b)) return false;  // two devices may be one

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -71,6 +72,15 @@ class OutputFile {
 // Throws UsageError for "-" given where a folder of outputs is asked for (gas and eos's --out):
 // standard output is one stream, not a folder.
 void refuse_standard_output_as_folder(const char* option, const std::string& name);
+
+// An output option and the name given for it ("" when not given).
+struct NamedOutput {
+  const char* option;
+  const std::string* name;
+};
+// Checks, before any work, every given output (check_output) and that no two reach the same one
+// (same_output); throws UsageError naming the option otherwise.
+void check_distinct_outputs(std::span<const NamedOutput> outputs);
 
 // Whether two names reach the same output (the same file through links, or both standard output).
 [[nodiscard]] bool same_output(const std::string& a, const std::string& b);

@@ -186,7 +186,8 @@ function report() {
 
 // ---- running ----------------------------------------------------------------------------------
 
-function frame() {
+// One frame of table time: the step, the sensors, the picture and the energy log.
+function advance() {
   // A flipper swinging during the step does work on the balls it hits.
   const swinging = flipperMoves();
   attempt(() => world.step(FRAME_TIME));
@@ -196,6 +197,13 @@ function frame() {
                   launched, drained, flips, swinging});
   if (energyLog.length > ENERGY_KEPT) energyLog.shift();
   if (++frames % 6 === 0) report();
+}
+
+// Paused (by a test), the page keeps drawing nothing new: its frames come from advanceFrames.
+let paused = false;
+
+function frame() {
+  if (!paused) advance();
   requestAnimationFrame(frame);
 }
 
@@ -253,6 +261,18 @@ window.caromPinball = {
   get energyLog() { return [...energyLog]; },
   get flipperIds() { return [...flipperIds]; },
   flipperSwing: FLIPPER_SWING,
+  // Stops the frame loop, so that a test counts table time in frames whatever the machine's load.
+  pause() { paused = true; },
+  resume() { paused = false; },
+  // Runs n frames at once and returns ball i's position and velocity after each (paused only).
+  advanceFrames(n, i) {
+    const path = [];
+    for (let k = 0; k < n; ++k) {
+      advance();
+      path.push(i === undefined ? null : {p: world.position(i), v: world.velocity(i)});
+    }
+    return path;
+  },
   // A ball put in play at p, at rest (for the flipper test).
   dropBall(p) {
     const index = attempt(() => world.add_ball(p, {x: 0, y: 0}, BALL_RADIUS, 1));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <sstream>
 #include <utility>
 #include <variant>
 
@@ -25,6 +26,33 @@ DrawnWorld::DrawnWorld(SceneWorld scene_world)
   const Scene& scene = scene_world_.scene;
   colors_.reserve(scene.balls.size());
   for (const SceneBall& ball : scene.balls) colors_.push_back(ball.color.value_or(""));
+}
+
+DrawnWorld::DrawnWorld(const DrawnWorld& original, World world)
+    : scene_world_{std::move(world),
+                   original.scene_world_.scene,
+                   original.scene_world_.balls,
+                   original.scene_world_.pockets,
+                   original.scene_world_.by_name,
+                   original.scene_world_.start_time,
+                   original.scene_world_.thermostat_work,
+                   original.scene_world_.sensors,
+                   original.scene_world_.sensor_events,
+                   original.scene_world_.shots_taken,
+                   original.scene_world_.motion_events},
+      colors_(original.colors_),
+      pockets_(original.pockets_),
+      held_velocity_(original.held_velocity_),
+      snapshot_(original.snapshot_),
+      step_contacts_(original.step_contacts_),
+      step_balls_(original.step_balls_),
+      has_sensors_(original.has_sensors_),
+      step_in_pieces_(original.step_in_pieces_) {}
+
+DrawnWorld DrawnWorld::copy() const {
+  std::stringstream saved;
+  scene_world_.world.save(saved);
+  return DrawnWorld(*this, World::load(saved));
 }
 
 int DrawnWorld::add_ball(Vec2 position, Vec2 velocity, double radius, double mass) {

@@ -31,6 +31,11 @@ class DrawnWorld {
   // of World::balls(), the order carom::science's contact network uses.
   explicit DrawnWorld(World world);
 
+  // A world that goes on exactly as this one would (World::save and World::load: the same calls
+  // give bit-identical results), its balls, pockets and colours indexed as here: a page tries a
+  // shot on the copy first (the "Pool" page's prediction).
+  [[nodiscard]] DrawnWorld copy() const;
+
   // ---- building ----
   // Returns the ball's index (0, 1, ... in the order added).
   int add_ball(Vec2 position, Vec2 velocity, double radius, double mass);
@@ -108,6 +113,7 @@ class DrawnWorld {
   [[nodiscard]] int pocket_of(WallId wall) const;
 
  private:
+  DrawnWorld(const DrawnWorld& original, World world);
   [[nodiscard]] BallId id(int index) const;
   [[nodiscard]] WallId first_own_wall() const;
   [[nodiscard]] bool present(BallId ball) const;

@@ -16,6 +16,7 @@
 #include "js_error.hpp"
 #include "lattice_filling.hpp"
 #include "scene_loading.hpp"
+#include "table_bindings.hpp"
 #include "world_queries.hpp"
 
 namespace carom::web {
@@ -328,7 +329,14 @@ EMSCRIPTEN_BINDINGS(carom_world) {
       .function("contact_network", &contact_network)
       .function("cast_ball", &cast_ball)
       .function("balls_in_circle", &balls_in_circle)
-      .function("step_contacts", &step_contacts);
+      .function("step_contacts", &step_contacts)
+      .function("copy", &copy_world, emscripten::allow_raw_pointers())
+      .function("strike", &strike)
+      .function("spin", &spin)
+      .function("set_spin", &set_spin)
+      .function("motion_state", &motion_state)
+      .function("at_rest", &at_rest)
+      .function("table", &table);
 }
 
 }  // namespace carom::web

@@ -1,27 +1,32 @@
-// "Pool": an aim line on a billiards table. The table is examples/billiards-frictionless.json
-// (cushions as segments, six pockets, fifteen racked balls and the cue ball), loaded with carom's scene
-// library, the cue ball at rest. Dragging sets the shot (direction from the cue ball towards the
-// pointer, speed by the distance); carom answers where the cue ball first touches something
-// (World::cast_ball, the cue ball left out), how the two balls leave a ball contact
-// (carom::bounce) or the cue ball a cushion (carom::bounce_off_static), and where each goes next
-// (cast_ball again). Shoot runs the table (carom::step_scene: pockets take balls) and lists the
-// first contact beside the prediction. This page keeps the aim, stops the run and draws.
+// "Pool": a shot on a table with friction. The table is examples/billiards.json (cushions as
+// segments, six pockets, fifteen racked balls and the cue ball; its cloth slides, rolls and spins
+// the balls, docs/pool.md), loaded with carom's scene library without its break shot. Dragging
+// sets the aim (direction from the cue ball towards the pointer, the cue's speed by the
+// distance); the ball diagram sets where the tip meets the cue ball (side and top or back spin).
+// carom answers in two ways: the ghost ball, where the cue ball first touches something along
+// the aim (World::cast_ball, the cue ball left out: a level cue sends it straight), and the whole
+// shot, run to rest on a copy of the world (DrawnWorld::copy, World::save and load) with the same
+// strike and the same frames the page then runs: every ball's path and resting place. Shoot runs
+// the table itself frame by frame until every ball rests and says whether it went exactly as
+// predicted. This page keeps the aim, runs the frames and draws.
 import {attempt, carom} from './carom.js';
 import {num, vec} from './format.js';
 import {fillReadout, slider} from './sliders.js';
 import {WorldCanvas} from './world_canvas.js';
 
-const SCENE = 'billiards-frictionless.json';
+const SCENE = 'billiards.json';
 const FRAME_TIME = 1 / 60;  // table time per frame: a time unit is a second
-// No friction: balls never stop by themselves, so a shot runs this long (table time) at most.
-const SHOT_SECONDS = 5;
-const SPEED_PER_METRE = 5;  // a drag of 1 m from the cue ball shoots at 5 m/s
+// A shot that has not come to rest after this many frames (a minute of table time) is stopped.
+const MAX_FRAMES = 3600;
+const SPEED_PER_METRE = 4;  // a drag of 1 m from the cue ball moves the cue at 4 m/s
 const MIN_SPEED = 0.1;
-const MAX_SPEED = 8;        // m/s: a hard break
+const MAX_SPEED = 7;        // m/s of the cue: the cue ball leaves at about 1.5 times it
+const TIP_LIMIT = 0.5;      // the tip within half the radius of the centre: farther, it miscues
+const TIP_STEP = 0.05;      // an arrow key moves the tip this share of the radius
 const RAIL = 0.12;          // m of rail drawn round the cloth
-const DIRECTION_LENGTH = 0.2;  // m: the arrows of the balls' directions after the contact
 
 const canvas = document.getElementById('table');
+const tipCanvas = document.getElementById('tip');
 const message = document.getElementById('message');
 const speedOutput = document.querySelector('output[for="speed"]');
 const speedSlider = slider('speed', (value) => {
@@ -32,6 +37,9 @@ const speedSlider = slider('speed', (value) => {
 
 const text = await (await fetch(`examples/${SCENE}`)).text();
 const sceneFile = JSON.parse(text);
+// The user strikes the cue ball here: the scene's own break shot is left out.
+delete sceneFile.shots;
+const tableText = JSON.stringify(sceneFile);
 const sceneBalls = sceneFile.balls;
 // The names and the cue ball's spot are the scene file's; everything else is asked of carom.
 const startNames = sceneBalls.map((b) => b.name ?? '');
@@ -47,28 +55,26 @@ let names = [];
 let cue = -1;        // the cue ball's index (a new one after it was potted and put back)
 let cueRadius = 0;
 let cueMass = 0;
-let restitution = 1;
 let cushions = [];
 let pockets = [];
 let cloth = null;    // the cushions' rectangle
 let view = null;
 let painter = null;
-let aim = null;         // {direction (unit), speed}
-let prediction = null;  // what carom answers for the aim (predict)
+let aim = null;             // {direction (unit), speed of the cue}
+let tip = {side: 0, height: 0};  // where the tip meets the cue ball, in shares of its radius
+let prediction = null;      // what carom answers for the aim and tip (predict)
 let dragging = false;
-let pointer = null;     // the pointer while dragging, in world units
+let pointer = null;         // the pointer while dragging, in world units
 let running = false;
-let shot = null;        // the last shot: when, what was predicted, what happened
+let shot = null;            // the last shot: what was predicted and what happened
 
 function build() {
   if (world) world.delete();
-  world = carom.load_scene(text, SCENE);
+  world = carom.load_scene(tableText, SCENE);
   names = [...startNames];
   cue = names.indexOf(CUE_NAME);
-  world.set_velocity(cue, {x: 0, y: 0});  // the scene breaks at 6 m/s; here the user shoots
   cueRadius = world.radius(cue);
   cueMass = world.mass(cue);
-  restitution = world.def().restitution;
   cushions = world.segments();
   pockets = world.pockets();
   const xs = cushions.flatMap((s) => [s.a.x, s.b.x]);
@@ -90,50 +96,80 @@ const unit = (v) => {
   return n > 0 ? scaled(v, 1 / n) : null;
 };
 
-// A cast long enough to cross the whole table.
-function reach() { return Math.hypot(view.width, view.height); }
-
-// Where a ball of radius r at `from` moving along `direction` goes first (carom's cast_ball),
-// with the filter given; null without a direction.
-function castFrom(from, r, direction, filter) {
-  if (!direction) return null;
-  const length = reach();
-  const hit = world.cast_ball(from, r, scaled(direction, length), filter);
-  return {...hit, distance: hit.fraction * length};
+// The cue's strike for the aim and the tip: carom::CueStrike's fields (a level cue).
+function strikeOf(a) {
+  return {speed: a.speed, direction: Math.atan2(a.direction.y, a.direction.x),
+          side: tip.side * cueRadius, height: tip.height * cueRadius};
 }
 
-// carom's answers for the aim: the cast, and after a ball contact the two balls' velocities and
-// where each goes next, after a cushion the cue ball's rebound and where it goes.
+// What one step's contacts say about a shot: the cue ball's first contact (times from the
+// shot's start), the balls the pockets took, and how many contacts there were.
+function tally(record, contacts, start) {
+  for (const c of contacts) {
+    ++record.contacts;
+    if (c.kind === 'pocket') record.potted.push(c.a);
+    if (record.first) continue;
+    let met = null;
+    if (c.kind === 'ball' && (c.a === record.cue || c.b === record.cue)) {
+      met = {kind: 'ball', ball: c.a === record.cue ? c.b : c.a, pocket: -1, wall: -1};
+    } else if (c.a === record.cue) {
+      met = {kind: c.kind, ball: -1, pocket: c.pocket, wall: c.wall};
+    }
+    if (met) record.first = {...met, time: c.time - start, point: c.point, normal: c.normal};
+  }
+}
+
+// Where each ball is now, by index (null for a ball a pocket took): the places a shot ends in.
+function places(w) {
+  const balls = Array.from(w.snapshot());  // a copy: position() may move the module's memory
+  const out = [];
+  for (let i = 0; i < balls.length / 4; ++i) out.push(balls[4 * i + 2] > 0 ? w.position(i) : null);
+  return out;
+}
+
+// The shot run to rest on a copy of the world, frame by frame as shoot() runs it: the cue ball's
+// launch, its first contact, every ball's path (its place after each frame, the first at the
+// strike, until a pocket takes it; for drawing) and resting place.
+function tryShot(strike) {
+  const trial = world.copy();
+  try {
+    trial.strike(cue, strike);
+    const start = trial.time();
+    const launch = {velocity: trial.velocity(cue), spin: trial.spin(cue),
+                    state: trial.motion_state(cue)};
+    const record = {cue, first: null, potted: [], contacts: 0};
+    const paths = places(trial).map((p) => (p ? [p] : []));
+    let frames = 0;
+    while (!trial.at_rest() && frames < MAX_FRAMES) {
+      trial.step(FRAME_TIME);
+      ++frames;
+      const contacts = trial.step_contacts();
+      tally(record, contacts, start);
+      // A potted ball's path ends in its pocket.
+      for (const c of contacts) if (c.kind === 'pocket') paths[c.a].push(c.point);
+      const balls = trial.snapshot();
+      for (let i = 0; i < paths.length; ++i) {
+        if (balls[4 * i + 2] > 0) paths[i].push({x: balls[4 * i], y: balls[4 * i + 1]});
+      }
+    }
+    return {launch, ...record, paths, frames, rests: trial.at_rest(), end: places(trial)};
+  } finally {
+    trial.delete();
+  }
+}
+
+// carom's answers for the aim and the tip: the cast along the aim (the ghost ball) and the shot
+// run to rest on a copy.
 function predict() {
   prediction = null;
   if (!aim || running || cue < 0) return;
   const from = world.position(cue);
-  const velocity = scaled(aim.direction, aim.speed);
-  const hit = castFrom(from, cueRadius, aim.direction, {ignore: cue});
-  const p = {from, velocity, speed: aim.speed, hit, time: hit.distance / aim.speed};
-  // The normal points from what was hit back to the cue ball; bounce wants it from the cue ball
-  // towards the other.
-  const towards = scaled(hit.normal, -1);
-  if (hit.kind === 'ball') {
-    const object = hit.ball;
-    const after = carom.bounce(velocity, cueMass, world.velocity(object), world.mass(object),
-                               towards, restitution);
-    p.object = object;
-    p.objectFrom = world.position(object);
-    p.objectRadius = world.radius(object);
-    p.objectVelocity = after.velocity_b;
-    p.cueVelocity = after.velocity_a;
-    // The object ball's way on, the cue ball (which will have moved) left out; the cue ball's
-    // from the ghost ball, the object ball (which leaves faster) left out.
-    p.objectPath = castFrom(p.objectFrom, p.objectRadius, unit(after.velocity_b),
-                            {ignore: object, accept: (i) => i !== cue});
-    p.cuePath = castFrom(hit.center, cueRadius, unit(after.velocity_a),
-                         {ignore: cue, accept: (i) => i !== object});
-  } else if (hit.kind === 'wall') {
-    p.cueVelocity = carom.bounce_off_static(velocity, cueMass, towards, restitution).velocity;
-    p.cuePath = castFrom(hit.center, cueRadius, unit(p.cueVelocity), {ignore: cue});
-  }
-  prediction = p;
+  const length = Math.hypot(view.width, view.height);  // a cast across the whole table
+  const hit = world.cast_ball(from, cueRadius, scaled(aim.direction, length), {ignore: cue});
+  hit.distance = hit.fraction * length;
+  const strike = strikeOf(aim);
+  prediction = {from, velocity: scaled(aim.direction, aim.speed), speed: aim.speed, strike, hit,
+                ...attempt(() => tryShot(strike))};
 }
 
 function setAim(direction, speed) {
@@ -145,7 +181,7 @@ function setAim(direction, speed) {
   predict();
 }
 
-// The aim from the cue ball towards point, its speed by the distance.
+// The aim from the cue ball towards point, the cue's speed by the distance.
 function aimTowards(point) {
   const from = world.position(cue);
   const d = {x: point.x - from.x, y: point.y - from.y};
@@ -153,57 +189,50 @@ function aimTowards(point) {
   setAim(d, Math.hypot(d.x, d.y) * SPEED_PER_METRE);
 }
 
+// The tip at (side, height) shares of the radius, brought within TIP_LIMIT of the centre.
+function setTip(side, height) {
+  const r = Math.hypot(side, height);
+  const s = r > TIP_LIMIT ? TIP_LIMIT / r : 1;
+  tip = {side: side * s, height: height * s};
+  drawTip();
+  predict();
+}
+
 // ---- the shot ---------------------------------------------------------------------------------
 
 function shoot() {
   if (running || !prediction) return;
   const p = prediction;
-  attempt(() => world.set_velocity(cue, p.velocity));
-  shot = {
-    start: world.time(),
-    cue,
-    predicted: {kind: p.hit.kind, ball: p.hit.ball, pocket: p.hit.pocket, wall: p.hit.wall,
-                time: p.time, point: p.hit.point, center: p.hit.center},
-    first: null,
-    potted: [],
-    contacts: 0,
-    ended: null,
-  };
+  attempt(() => world.strike(cue, p.strike));
+  shot = {start: world.time(), cue, predicted: p, first: null, potted: [], contacts: 0, frames: 0,
+          states: new Set(), ended: null, asPredicted: null};
   running = true;
   prediction = null;
   message.textContent = '';
 }
 
-// The cue ball's part in a contact: what it met, or null when the contact is not the cue ball's.
-function cueContact(c) {
-  if (c.kind === 'ball' && (c.a === shot.cue || c.b === shot.cue)) {
-    return {kind: 'ball', ball: c.a === shot.cue ? c.b : c.a, pocket: -1, wall: -1};
-  }
-  if (c.a !== shot.cue) return null;
-  return {kind: c.kind, ball: -1, pocket: c.pocket, wall: c.wall};
-}
-
-function record(contacts) {
-  for (const c of contacts) {
-    ++shot.contacts;
-    if (c.kind === 'pocket') shot.potted.push(c.a);
-    if (shot.first) continue;
-    const met = cueContact(c);
-    if (met) shot.first = {...met, time: c.time - shot.start, point: c.point};
-  }
-}
-
-// Stops every ball where it is; a potted cue ball comes back to its spot (or the nearest free
-// place along the spot's line towards the head cushion). The aim is shown again.
+// Ends the shot: at rest by itself, or stopped (a click, Stop, or a minute gone) with every ball
+// held still where it is, spin and all. A potted cue ball comes back to its spot (or the nearest
+// free place along the spot's line towards the head cushion). The aim is shown again.
 function endShot(why) {
   if (!running) return;
   running = false;
   shot.ended = why;
-  const balls = Array.from(world.snapshot());
-  for (let i = 0; i < balls.length / 4; ++i) {
-    if (balls[4 * i + 2] > 0) world.set_velocity(i, {x: 0, y: 0});
+  shot.end = places(world);
+  const p = shot.predicted;
+  shot.asPredicted = why === 'rest' && shot.frames === p.frames &&
+                     shot.contacts === p.contacts &&
+                     shot.end.every((q, i) => (q === null ? p.end[i] === null
+                                                          : p.end[i] && q.x === p.end[i].x &&
+                                                            q.y === p.end[i].y));
+  if (why !== 'rest') {
+    shot.end.forEach((q, i) => {
+      if (!q) return;
+      world.set_velocity(i, {x: 0, y: 0});
+      world.set_spin(i, {x: 0, y: 0, z: 0});
+    });
   }
-  if (balls[4 * cue + 2] === 0) respotCue();
+  if (shot.end[cue] === null) respotCue();
   predict();
 }
 
@@ -258,24 +287,6 @@ function line(c, a, b, colour, widthPx, dash = []) {
   c.restore();
 }
 
-// A line from a to b with an arrowhead at b.
-function arrow(c, a, b, colour, widthPx, dash = []) {
-  line(c, a, b, colour, widthPx, dash);
-  const ratio = window.devicePixelRatio || 1;
-  const [ax, ay, bx, by] = [painter.px(a.x), painter.py(a.y), painter.px(b.x), painter.py(b.y)];
-  const length = Math.hypot(bx - ax, by - ay);
-  if (length < 1) return;
-  const [ux, uy] = [(bx - ax) / length, (by - ay) / length];
-  const size = 8 * ratio;
-  c.fillStyle = colour;
-  c.beginPath();
-  c.moveTo(bx, by);
-  c.lineTo(bx - size * ux - size * 0.45 * uy, by - size * uy + size * 0.45 * ux);
-  c.lineTo(bx - size * ux + size * 0.45 * uy, by - size * uy - size * 0.45 * ux);
-  c.closePath();
-  c.fill();
-}
-
 function drawBall(c, i, x, y, r, colours) {
   const ratio = window.devicePixelRatio || 1;
   const p = {x, y};
@@ -305,17 +316,6 @@ function drawBall(c, i, x, y, r, colours) {
   }
 }
 
-// A ball's way after the contact: an arrow along its velocity, DIRECTION_LENGTH long, and a thin
-// line on to where it would meet something next, with its outline (radius r) there.
-function departure(c, from, velocity, path, r, colour) {
-  if (!velocity || !path) return;
-  const d = unit(velocity);
-  if (path.distance > DIRECTION_LENGTH) line(c, from, path.center, colour, 1, [4, 4]);
-  ghost(c, path.center, r, colour, 1);
-  arrow(c, from, {x: from.x + d.x * DIRECTION_LENGTH, y: from.y + d.y * DIRECTION_LENGTH},
-        colour, 2.5);
-}
-
 // A dashed outline of a ball of radius r at p.
 function ghost(c, p, r, colour, widthPx) {
   const ratio = window.devicePixelRatio || 1;
@@ -326,17 +326,35 @@ function ghost(c, p, r, colour, widthPx) {
   c.restore();
 }
 
-function drawAim(c) {
+
+// A ball's predicted path, a line through its place at every frame, and a dashed outline where
+// it comes to rest (none for a ball a pocket takes).
+function drawPath(c, path, end, r, colour) {
+  if (path.length < 2) return;
+  const ratio = window.devicePixelRatio || 1;
+  c.save();
+  c.strokeStyle = colour;
+  c.lineWidth = 1.5 * ratio;
+  c.beginPath();
+  c.moveTo(painter.px(path[0].x), painter.py(path[0].y));
+  for (const q of path) c.lineTo(painter.px(q.x), painter.py(q.y));
+  c.stroke();
+  c.restore();
+  if (end) ghost(c, end, r, colour, 1);
+}
+
+function drawPrediction(c) {
   const p = prediction;
   const {hit} = p;
   if (dragging && pointer) line(c, p.from, pointer, 'rgba(255,255,255,0.35)', 1, [2, 3]);
+  const balls = world.snapshot();
+  p.paths.forEach((path, i) => {
+    drawPath(c, path, p.end[i], balls[4 * i + 2], i === cue ? CUE_LINE : OBJECT_LINE);
+  });
+  // The cast along the aim: the ghost ball and the touching point, where the cue ball gets to it.
+  if (!sameContact(p.first, hit)) return;
   line(c, p.from, hit.center, AIM, 1.5, [6, 4]);
   if (hit.kind === 'pocket') disc(c, pockets[hit.pocket], pockets[hit.pocket].radius, null, AIM);
-  if (p.objectPath) {
-    departure(c, p.objectFrom, p.objectVelocity, p.objectPath, p.objectRadius, OBJECT_LINE);
-  }
-  departure(c, hit.center, p.cueVelocity, p.cuePath, cueRadius, CUE_LINE);
-  // The ghost ball (the cue ball where it first touches something) and the touching point.
   ghost(c, hit.center, cueRadius, AIM, 1.5);
   disc(c, hit.point, 0.18 * cueRadius, '#ff5252');
 }
@@ -352,14 +370,47 @@ function draw() {
              (cloth.y1 - cloth.y0) * s);
   for (const pocket of pockets) disc(c, pocket, pocket.radius, '#111');
   painter.segments(cushions, CUSHION, 4);
+  if (prediction) drawPrediction(c);
   const balls = Array.from(world.snapshot());
   const colours = world.colors();
   for (let i = 0; i < balls.length / 4; ++i) {
     const [x, y, r] = [balls[4 * i], balls[4 * i + 1], balls[4 * i + 2]];
     if (r > 0) drawBall(c, i, x, y, r, colours);
   }
-  if (prediction) drawAim(c);
   painter.frame();
+}
+
+// The cue ball seen by the player: the tip's place on it, and the circle it must stay within.
+function drawTip() {
+  const ratio = window.devicePixelRatio || 1;
+  const box = tipCanvas.getBoundingClientRect();
+  tipCanvas.width = Math.max(1, Math.round(box.width * ratio));
+  tipCanvas.height = Math.max(1, Math.round(box.height * ratio));
+  const c = tipCanvas.getContext('2d');
+  const [cx, cy] = [tipCanvas.width / 2, tipCanvas.height / 2];
+  const r = 0.45 * Math.min(tipCanvas.width, tipCanvas.height);
+  c.clearRect(0, 0, tipCanvas.width, tipCanvas.height);
+  c.lineWidth = ratio;
+  c.fillStyle = '#f8f8f0';
+  c.strokeStyle = '#222';
+  c.beginPath();
+  c.arc(cx, cy, r, 0, 2 * Math.PI);
+  c.fill();
+  c.stroke();
+  c.setLineDash([3 * ratio, 3 * ratio]);
+  c.strokeStyle = '#999';
+  c.beginPath();
+  c.arc(cx, cy, TIP_LIMIT * r, 0, 2 * Math.PI);
+  c.moveTo(cx - r, cy);
+  c.lineTo(cx + r, cy);
+  c.moveTo(cx, cy - r);
+  c.lineTo(cx, cy + r);
+  c.stroke();
+  c.setLineDash([]);
+  c.fillStyle = '#1565c0';
+  c.beginPath();
+  c.arc(cx + tip.side * r, cy - tip.height * r, 0.12 * r, 0, 2 * Math.PI);
+  c.fill();
 }
 
 // ---- the readout ------------------------------------------------------------------------------
@@ -376,13 +427,33 @@ function cushionName(wall) {
 }
 
 function what(hit) {
-  if (!hit) return '—';
+  if (!hit) return 'nothing: the cue ball stops first';
   switch (hit.kind) {
     case 'ball': return `ball ${names[hit.ball] || hit.ball}`;
     case 'pocket': return `pocket ${pocketNames[hit.pocket]}`;
     case 'wall': return hit.boundary ? 'the table\'s edge' : `${cushionName(hit.wall)} cushion`;
     default: return 'nothing';
   }
+}
+
+// Whether a contact met the same thing as a hit (or another contact).
+function sameContact(a, b) {
+  return Boolean(a && b) && a.kind === b.kind && a.ball === b.ball && a.pocket === b.pocket &&
+         a.wall === b.wall;
+}
+
+function tipText() {
+  const part = (value, plus, minus) =>
+    (Math.abs(value) < 5e-3 ? '' : `${num(Math.abs(value), 2)} R ${value > 0 ? plus : minus}`);
+  const parts = [part(tip.side, 'right', 'left'), part(tip.height, 'above', 'below')];
+  return parts.filter(Boolean).join(', ') || 'centre';
+}
+
+function restText(p) {
+  const potted = p.potted.length ? `; pots ${p.potted.map((i) => names[i] || i).join(', ')}` : '';
+  const rest = p.rests ? `rest after ${num(p.frames * FRAME_TIME, 3)} s`
+                       : `still moving after ${num(p.frames * FRAME_TIME, 3)} s`;
+  return `${p.contacts} contacts, ${rest}${potted}`;
 }
 
 function report() {
@@ -392,24 +463,41 @@ function report() {
   for (let i = 2; i < balls.length; i += 4) if (balls[i] > 0) ++onTable;
   let state = 'aim: drag from the cue ball';
   if (running) state = `running, ${num(world.time() - shot.start, 3)} s`;
+  else if (shot?.ended) state = shot.ended === 'rest' ? 'every ball at rest' : `stopped (${shot.ended})`;
   else if (aim) state = 'ready';
   let first = '—';
   if (shot?.first) {
-    const expected = shot.predicted;
-    const same = shot.first.kind === expected.kind && shot.first.ball === expected.ball &&
-                 shot.first.pocket === expected.pocket && shot.first.wall === expected.wall;
+    const expected = shot.predicted.first;
+    const same = sameContact(shot.first, expected) && shot.first.time === expected.time;
     first = `${what(shot.first)} at ${num(shot.first.time, 6)} s ` +
-            `(predicted ${what(expected)} at ${num(expected.time, 6)} s${same ? '' : ': differs'})`;
+            `(predicted ${what(expected)}${expected ? ` at ${num(expected.time, 6)} s` : ''}` +
+            `${same ? '' : ': differs'})`;
+  }
+  let motion = '—';
+  if (running || shot?.ended) {
+    const counts = {sliding: 0, rolling: 0, spinning: 0, stationary: 0};
+    for (let i = 0; i < balls.length / 4; ++i) {
+      if (balls[4 * i + 2] > 0) ++counts[world.motion_state(i)];
+    }
+    motion = Object.entries(counts).map(([k, v]) => `${v} ${k}`).join(', ');
+  }
+  let predicted = '—';
+  if (shot?.asPredicted !== null && shot?.asPredicted !== undefined) {
+    predicted = shot.asPredicted ? 'yes: every ball where the prediction put it, to the bit'
+                                 : 'no';
   }
   fillReadout({
-    target: p ? what(p.hit) + (p.hit.overlapping ? ' (touching it now)' : '') : '—',
-    ghost: p ? vec(p.hit.center, 5) : '—',
-    distance: p ? `${num(p.hit.distance, 5)} m, ${num(p.time, 4)} s at ${num(p.speed, 3)} m/s`
-                : '—',
-    object_path: p?.objectPath ? what(p.objectPath) : '—',
-    cue_path: p?.cuePath ? what(p.cuePath) : '—',
+    target: p ? what(p.first) : '—',
+    ghost: p && sameContact(p.first, p.hit) ? vec(p.hit.center, 5) : '—',
+    distance: p?.first ? `${num(p.hit.distance, 5)} m, after ${num(p.first.time, 4)} s` : '—',
+    launch: p ? `${num(Math.hypot(p.launch.velocity.x, p.launch.velocity.y), 3)} m/s, ` +
+                `${p.launch.state}` : '—',
+    tip: tipText(),
+    prediction: p ? restText(p) : '—',
     shot: state,
     first,
+    motion,
+    as_predicted: predicted,
     potted: shot?.potted.length ? shot.potted.map((i) => names[i] || i).join(', ') : '—',
     balls: String(onTable),
   });
@@ -421,9 +509,14 @@ function frame() {
   requestAnimationFrame(frame);
   if (running) {
     attempt(() => world.step(FRAME_TIME));
-    record(world.step_contacts());
-    if (world.time() - shot.start >= SHOT_SECONDS) endShot('time');
-    else if (world.kinetic_energy() === 0) endShot('rest');
+    ++shot.frames;
+    tally(shot, world.step_contacts(), shot.start);
+    const balls = Array.from(world.snapshot());
+    for (let i = 0; i < balls.length / 4; ++i) {
+      if (balls[4 * i + 2] > 0) shot.states.add(world.motion_state(i));
+    }
+    if (world.at_rest()) endShot('rest');
+    else if (shot.frames >= MAX_FRAMES) endShot('time');
   }
   draw();
   report();
@@ -459,6 +552,38 @@ const letGo = () => {
 canvas.addEventListener('pointerup', letGo);
 canvas.addEventListener('pointercancel', letGo);
 
+// The tip: pressed or dragged on the ball diagram, or moved with the arrow keys.
+function tipAt(event) {
+  const box = tipCanvas.getBoundingClientRect();
+  const r = 0.45 * Math.min(box.width, box.height);
+  setTip((event.clientX - box.left - box.width / 2) / r,
+         (box.top + box.height / 2 - event.clientY) / r);
+}
+let tipDragging = false;
+tipCanvas.addEventListener('pointerdown', (event) => {
+  event.preventDefault();
+  tipCanvas.setPointerCapture(event.pointerId);
+  tipDragging = true;
+  tipAt(event);
+});
+tipCanvas.addEventListener('pointermove', (event) => { if (tipDragging) tipAt(event); });
+for (const type of ['pointerup', 'pointercancel']) {
+  tipCanvas.addEventListener(type, () => { tipDragging = false; });
+}
+const TIP_KEYS = {ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1]};
+tipCanvas.addEventListener('keydown', (event) => {
+  if (event.key === 'Home') {
+    event.preventDefault();
+    setTip(0, 0);
+    return;
+  }
+  const move = TIP_KEYS[event.key];
+  if (!move) return;
+  event.preventDefault();
+  setTip(tip.side + move[0] * TIP_STEP, tip.height + move[1] * TIP_STEP);
+});
+document.getElementById('centre-tip').addEventListener('click', () => setTip(0, 0));
+
 document.getElementById('shoot').addEventListener('click', shoot);
 document.getElementById('stop').addEventListener('click', () => endShot('stop'));
 document.getElementById('rack').addEventListener('click', () => {
@@ -472,6 +597,7 @@ document.addEventListener('keydown', (event) => {
   event.preventDefault();
   shoot();
 });
+window.addEventListener('resize', () => drawTip());
 
 // For the tests (web/tests/pool.test.mjs).
 window.caromPool = {
@@ -479,13 +605,20 @@ window.caromPool = {
   get cue() { return cue; },
   get names() { return [...names]; },
   pocketNames,
-  get restitution() { return restitution; },
   get prediction() { return prediction; },
   get running() { return running; },
-  get shot() { return shot; },
-  // The aim as a drag would set it: direction (any length) and speed in m/s.
+  // The last shot, its set of motion states seen as a list.
+  get shot() { return shot && {...shot, states: [...shot.states]}; },
+  get tip() { return {...tip}; },
+  frameTime: FRAME_TIME,
+  // The aim as a drag would set it: direction (any length) and the cue's speed in m/s.
   aim(direction, speed) {
     setAim(direction, speed);
+    return prediction;
+  },
+  // The tip as the ball diagram would set it, in shares of the radius.
+  setTip(side, height) {
+    setTip(side, height);
     return prediction;
   },
   shoot,
@@ -498,6 +631,7 @@ window.caromPool = {
 };
 
 build();
+drawTip();
 setAim({x: 1, y: 0}, speedSlider.value);
 requestAnimationFrame(frame);
 document.body.dataset.ready = 'true';

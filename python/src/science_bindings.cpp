@@ -6,6 +6,7 @@
 #include <atomic>
 #include <exception>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "gas/gas_options.hpp"
 #include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
+#include "gas/seed_ensemble.hpp"
 #include "gas/gas_session.hpp"
 #include "options/usage_error.hpp"
 #include "pack/pack_session.hpp"
@@ -151,23 +153,33 @@ GasMeasurement measure_gas(const py::object& n, const py::object& eta,
 py::object eos(const std::vector<py::object>& etas, const py::object& n,
                const py::object& equilibrate, const py::object& collisions, const py::object& seed,
                const py::object& blocks, const py::object& mix, const std::string& start,
-               const py::object& threads) {
+               const py::object& threads, const py::object& seeds) {
   const cli::GasOptionText text =
       option_text(n, py::float_(0.0), equilibrate, collisions, seed, blocks, mix, start);
   std::vector<cli::GasSpec> specs;
   std::uint64_t thread_count = 0;
+  std::uint64_t seed_count = 1;
   try {
     for (const py::object& eta : etas) {
       specs.push_back(cli::parse_gas_spec(text, eta.cast<double>(), py::str(eta)));
     }
     thread_count = cli::parse_eos_threads(py::str(threads));
+    seed_count = cli::parse_seed_count(py::str(seeds));
+    specs = cli::seeded_specs(specs, seed_count);
   } catch (const cli::UsageError& error) {
     raise_usage(error);
   }
   const std::vector<cli::GasOutcome> outcomes = run_points(specs, thread_count);
   nlohmann::json points = nlohmann::json::array();
-  for (std::size_t i = 0; i < specs.size(); ++i)
-    points.push_back(cli::gas_json(specs[i], outcomes[i]));
+  for (std::size_t first = 0; first < specs.size(); first += seed_count) {
+    if (seed_count == 1) {
+      points.push_back(cli::gas_json(specs[first], outcomes[first]));
+    } else {
+      points.push_back(
+          cli::seeded_point_json(std::span<const cli::GasSpec>(specs).subspan(first, seed_count),
+                                 std::span<const cli::GasOutcome>(outcomes).subspan(first, seed_count)));
+    }
+  }
   return json_value(nlohmann::json{{"points", points}}.dump());
 }
 
@@ -257,9 +269,11 @@ void bind_science(py::module_& m) {
   m.def("eos", &eos, py::arg("etas"), py::kw_only(), py::arg("n") = 400,
         py::arg("equilibrate") = 50, py::arg("collisions") = 500, py::arg("seed") = 1,
         py::arg("blocks") = 16, py::arg("mix") = py::none(), py::arg("start") = "lattice",
-        py::arg("threads") = 2,
-        "The equation of state at each packing fraction in etas, `threads` points at once, as "
-        "`carom eos --json`: {\"points\": [one gas() dict per point]}");
+        py::arg("threads") = 2, py::arg("seeds") = 1,
+        "The equation of state at each packing fraction in etas, `threads` runs at once, as "
+        "`carom eos --json`: {\"points\": [one gas() dict per point]}; with seeds=K each point "
+        "is K runs (seeds seed, seed + 1, ...) and its dict gives the mean, the block-average "
+        "error (_err) and the error between the seeds (_seed_err), each run's dict in \"runs\"");
 }
 
 }  // namespace carom::python

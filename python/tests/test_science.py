@@ -86,6 +86,26 @@ def test_eos_is_the_tool_eos():
     assert [p["eta"] for p in ours["points"]] == [0.1, 0.2]
 
 
+def test_eos_with_seeds_is_the_tool_eos_and_each_run_is_that_seeds_gas():
+    options = {k: v for k, v in SMALL.items() if k != "eta"}
+    ours = carom.eos([0.3], seeds=3, **options)
+    theirs = tool_json("eos", "--eta=0.3", "--seeds=3", "--threads=1",
+                       *[f"--{k}={v}" for k, v in options.items()])
+    point, tools = ours["points"][0], theirs["points"][0]
+    same_numbers({k: v for k, v in point.items() if k != "runs"},
+                 {k: v for k, v in tools.items() if k != "runs"})
+    for a, b in zip(point["runs"], tools["runs"], strict=True):
+        same_numbers(a, b)
+    assert point["seeds"] == 3 and point["first_seed"] == SMALL["seed"]
+    for k, run in enumerate(point["runs"]):
+        alone = carom.gas(**dict(SMALL, seed=SMALL["seed"] + k))
+        assert run["Z"] == alone["Z"]
+    zs = [run["Z"] for run in point["runs"]]
+    assert point["Z"] == pytest.approx(sum(zs) / 3, rel=1e-14)
+    with pytest.raises(ValueError, match="^seeds = 0"):
+        carom.eos([0.3], seeds=0, **options)
+
+
 @pytest.mark.parametrize(
     "argument, value",
     [("n", 1), ("eta", 0.95), ("blocks", 1), ("start", "hot"), ("mix", "2")],

@@ -1,11 +1,14 @@
 #include "commands/eos_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +20,7 @@
 #include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
 #include "gas/gas_session.hpp"
+#include "gas/seed_ensemble.hpp"
 #include "options/exit_codes.hpp"
 #include "options/option_value.hpp"
 #include "options/readable_number.hpp"
@@ -38,6 +42,7 @@ struct EosOptions {
   GasOptionText gas;
   std::string etas = "0.1:0.7:0.05";
   std::string threads = "2";
+  std::string seeds = "1";
   std::string out;
   bool json = false;
 };
@@ -142,6 +147,86 @@ std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOut
   return render_plot(plot);
 }
 
+// ---- with several seeds a point ----
+
+// A point's runs: runs[k] of the point's K seeds.
+struct EosPoint {
+  std::span<const GasSpec> specs;
+  std::span<const GasOutcome> runs;
+};
+
+std::string seeded_table(const std::vector<EosPoint>& points) {
+  std::ostringstream out;
+  out << "| η | Z | ± blocks | ± seeds | Henderson | (Z − Z_H)/Z_H | collisions | g(σ) | ψ6 | D "
+         "|\n";
+  out << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const EosPoint& point : points) {
+    const SeededPoint p = combine_seeds(point.runs);
+    const double eta = point.specs.front().eta;
+    const double henderson = science::henderson_z(eta);
+    const double error = std::max(p.z.block_error, p.z.seed_error);
+    const ValueAndError z = with_error_parts(p.z.mean, error);
+    out << "| " << readable(eta) << " | " << z.value << " | " << rounded(p.z.block_error) << " | "
+        << rounded(p.z.seed_error) << " | " << rounded(henderson) << " | "
+        << rounded((p.z.mean - henderson) / henderson) << " | " << p.collisions << " | "
+        << rounded(p.g_contact.mean) << " | " << rounded(p.psi6.mean) << " | "
+        << rounded(p.diffusion.mean) << " |\n";
+  }
+  return out.str();
+}
+
+std::string seeded_csv(const std::vector<EosPoint>& points) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "eta,seeds,Z,Z_err,Z_seed_err,Z_henderson,collisions,time,collision_rate,"
+         "collision_rate_err,collision_rate_seed_err,g_contact,g_contact_err,g_contact_seed_err,"
+         "psi6,psi6_err,psi6_seed_err,diffusion,diffusion_err,diffusion_seed_err\n";
+  for (const EosPoint& point : points) {
+    const SeededPoint p = combine_seeds(point.runs);
+    const double eta = point.specs.front().eta;
+    out << eta << ',' << point.runs.size();
+    for (const SeedEstimate* e : {&p.z}) {
+      out << ',' << e->mean << ',' << e->block_error << ',' << e->seed_error;
+    }
+    out << ',' << science::henderson_z(eta) << ',' << p.collisions << ',' << p.time;
+    for (const SeedEstimate* e : {&p.collision_rate, &p.g_contact, &p.psi6, &p.diffusion}) {
+      out << ',' << e->mean << ',' << e->block_error << ',' << e->seed_error;
+    }
+    out << '\n';
+  }
+  return out.str();
+}
+
+std::string seeded_plot(const std::vector<EosPoint>& points) {
+  const GasSpec& first = points.front().specs.front();
+  PlotSpec plot{"Equation of state of hard disks, Z = PA/(NkT)",
+                "N = " + std::to_string(first.n) + ", " +
+                    std::to_string(points.front().runs.size()) + " seeds a point from seed " +
+                    std::to_string(first.seed) + "; error bars: standard errors between seeds",
+                "packing fraction η",
+                "Z",
+                {}};
+  PlotSeries measured{"carom gas", "#1f77b4", {}, {}, {}, true, false};
+  for (const EosPoint& point : points) {
+    const SeededPoint p = combine_seeds(point.runs);
+    measured.x.push_back(point.specs.front().eta);
+    measured.y.push_back(p.z.mean);
+    measured.error.push_back(p.z.seed_error);
+  }
+  PlotSeries henderson{"Henderson (1 + η²/8)/(1 − η)²", "#d62728", {}, {}, {}, false, false};
+  const double low = points.front().specs.front().eta;
+  const double high = points.back().specs.front().eta;
+  constexpr int kCurvePoints = 100;
+  for (int k = 0; k <= kCurvePoints; ++k) {
+    const double eta = low + (high - low) * k / kCurvePoints;
+    henderson.x.push_back(eta);
+    henderson.y.push_back(science::henderson_z(eta));
+  }
+  plot.series.push_back(henderson);
+  plot.series.push_back(measured);
+  return render_plot(plot);
+}
+
 int run(const EosOptions& options) {
   refuse_standard_output_as_folder("--out", options.out);
   const std::vector<double> etas = parse_etas(options.etas);
@@ -149,37 +234,53 @@ int run(const EosOptions& options) {
   specs.reserve(etas.size());
   for (const double eta : etas) specs.push_back(parse_gas_spec(options.gas, eta, options.etas));
   const std::uint64_t threads = parse_eos_threads(options.threads);
+  const std::uint64_t seeds = parse_seed_count(options.seeds);
+  // One gas run for each point and seed, point by point (with one seed, the points themselves).
+  std::vector<GasSpec> runs = seeded_specs(specs, seeds);
   // A signal stops every point's world; the points completed are written.
   const StopOnSignals stop_on_signals;
   GasPointsOutcome run;
   {
     ProgressBar bar(true);
-    run = run_gas_points(specs, threads, &StopOnSignals::requested,
+    run = run_gas_points(runs, threads, &StopOnSignals::requested,
                          [&bar](double fraction) { bar.update(fraction, ""); });
   }
   std::vector<GasOutcome>& outcomes = run.outcomes;
-  const std::vector<std::exception_ptr>& failures = run.failures;
-  const std::vector<char>& completed = run.completed;
-  for (const std::exception_ptr& failure : failures) {
+  for (const std::exception_ptr& failure : run.failures) {
     if (failure) std::rethrow_exception(failure);
   }
-  // After a signal, the points completed before it; otherwise all of them.
+  // After a signal, the points whose every seed completed before it; otherwise all of them.
   const std::size_t all_points = specs.size();
   if (StopOnSignals::requested()) {
-    std::vector<GasSpec> kept_specs;
+    std::vector<GasSpec> kept_runs;
     std::vector<GasOutcome> kept_outcomes;
-    for (std::size_t i = 0; i < specs.size(); ++i) {
-      if (completed[i] == 0) continue;
-      kept_specs.push_back(specs[i]);
-      kept_outcomes.push_back(outcomes[i]);
+    std::size_t kept_points = 0;
+    for (std::size_t first = 0; first < runs.size(); first += seeds) {
+      bool complete = true;
+      for (std::size_t k = first; k < first + seeds; ++k) {
+        complete = complete && run.completed[k] != 0;
+      }
+      if (!complete) continue;
+      ++kept_points;
+      kept_runs.insert(kept_runs.end(), runs.begin() + static_cast<std::ptrdiff_t>(first),
+                       runs.begin() + static_cast<std::ptrdiff_t>(first + seeds));
+      kept_outcomes.insert(kept_outcomes.end(),
+                           outcomes.begin() + static_cast<std::ptrdiff_t>(first),
+                           outcomes.begin() + static_cast<std::ptrdiff_t>(first + seeds));
     }
-    specs = std::move(kept_specs);
+    runs = std::move(kept_runs);
     outcomes = std::move(kept_outcomes);
-    std::cerr << "carom eos: " << StopOnSignals::what() << " with " << specs.size() << " of "
+    std::cerr << "carom eos: " << StopOnSignals::what() << " with " << kept_points << " of "
               << all_points << " points complete"
-              << (specs.empty() ? ": nothing to write\n" : "; the outputs hold those\n");
-    if (specs.empty()) return StopOnSignals::exit_code();
+              << (runs.empty() ? ": nothing to write\n" : "; the outputs hold those\n");
+    if (runs.empty()) return StopOnSignals::exit_code();
   }
+  std::vector<EosPoint> points;
+  for (std::size_t first = 0; first < runs.size(); first += seeds) {
+    points.push_back({std::span<const GasSpec>(runs).subspan(first, seeds),
+                      std::span<const GasOutcome>(outcomes).subspan(first, seeds)});
+  }
+  const bool seeded = seeds > 1;
 
   if (!options.out.empty()) {
     std::error_code error;
@@ -190,9 +291,9 @@ int run(const EosOptions& options) {
       return kExitUsage;
     }
     const std::vector<std::pair<std::string, std::string>> files{
-        {"eos.csv", eos_csv(specs, outcomes)},
-        {"eos.md", table(specs, outcomes)},
-        {"eos.svg", eos_plot(specs, outcomes)}};
+        {"eos.csv", seeded ? seeded_csv(points) : eos_csv(runs, outcomes)},
+        {"eos.md", seeded ? seeded_table(points) : table(runs, outcomes)},
+        {"eos.svg", seeded ? seeded_plot(points) : eos_plot(runs, outcomes)}};
     for (const auto& [name, content] : files) {
       const std::string path = (std::filesystem::path(options.out) / name).string();
       if (const auto failure = write_output(path, content)) {
@@ -202,12 +303,14 @@ int run(const EosOptions& options) {
     }
   }
   if (options.json) {
-    nlohmann::json points = nlohmann::json::array();
-    for (std::size_t i = 0; i < specs.size(); ++i)
-      points.push_back(gas_json(specs[i], outcomes[i]));
-    std::cout << nlohmann::json{{"points", points}}.dump() << '\n';
+    nlohmann::json listed = nlohmann::json::array();
+    for (const EosPoint& point : points) {
+      listed.push_back(seeded ? seeded_point_json(point.specs, point.runs)
+                              : gas_json(point.specs.front(), point.runs.front()));
+    }
+    std::cout << nlohmann::json{{"points", listed}}.dump() << '\n';
   } else {
-    std::cout << table(specs, outcomes);
+    std::cout << (seeded ? seeded_table(points) : table(runs, outcomes));
   }
   return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;
 }
@@ -222,10 +325,14 @@ Command add_eos_command(CLI::App& app) {
       "measurements), spread over --threads threads, each with its own World. Prints a\n"
       "table (or --json: {\"points\": [one carom gas object per point]}); --out DIR writes\n"
       "eos.csv, eos.md and eos.svg (Z with error bars and Henderson's\n"
-      "Z = (1 + eta^2/8)/(1 - eta)^2).\n\n"
+      "Z = (1 + eta^2/8)/(1 - eta)^2). With --seeds K each point is K runs: the mean, its\n"
+      "block-average error and the standard error between the seeds (\"Z_seed_err\"; each\n"
+      "run's own report under \"runs\" in --json), which agree when the blocks are long\n"
+      "enough.\n\n"
       "Examples:\n"
       "  carom eos --eta 0.1:0.7:0.05 --n 400 --collisions 1000 --out eos\n"
-      "  carom eos --eta 0.05:0.3:0.05 --threads 2 --json");
+      "  carom eos --eta 0.05:0.3:0.05 --threads 2 --json\n"
+      "  carom eos --eta 0.3:0.6:0.1 --seeds 8 --out eos-seeds");
   auto options = std::make_shared<EosOptions>();
   eos->add_option("--eta", options->etas, "Packing fractions FROM:TO:STEP (or one)")
       ->type_name("FROM:TO:STEP")
@@ -233,6 +340,11 @@ Command add_eos_command(CLI::App& app) {
   add_gas_options(*eos, options->gas);
   eos->add_option("--threads", options->threads, "Points run at once, one World each")
       ->type_name("T")
+      ->capture_default_str();
+  eos->add_option("--seeds", options->seeds,
+                  "Independent runs a point, seeds SEED, SEED + 1, ...: the mean and the error "
+                  "between them beside the block-average error")
+      ->type_name("K")
       ->capture_default_str();
   eos->add_option("-o,--out", options->out, "Directory for eos.csv, eos.md, eos.svg")
       ->type_name("DIR");

@@ -13,14 +13,15 @@
 #include "system/output_file.hpp"
 
 namespace carom::cli {
+
+nlohmann::json json_number(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
 namespace {
 
 using science::BlockEstimate;
 using science::GasResults;
-
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
 
 bool one_size(const GasSpec& spec) {
   for (const double d : spec.diameters) {
@@ -30,8 +31,8 @@ bool one_size(const GasSpec& spec) {
 }
 
 void put(nlohmann::json& out, const std::string& key, const BlockEstimate& estimate) {
-  out[key] = number(estimate.mean);
-  out[key + "_err"] = number(estimate.error);
+  out[key] = json_number(estimate.mean);
+  out[key + "_err"] = json_number(estimate.error);
 }
 
 std::string csv(const science::Curve& curve, const std::string& header) {

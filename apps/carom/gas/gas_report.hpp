@@ -10,6 +10,9 @@
 
 namespace carom::cli {
 
+// A JSON number, or null for a NaN or an infinity (a value a run could not give).
+[[nodiscard]] nlohmann::json json_number(double value);
+
 // One JSON object: the measurements' keys (n, eta, collisions, time, kT, Z, Z_err,
 // collision_rate, mean_free_path, v4_over_v2sq, g_contact, psi6, diffusion, energy_drift,
 // wall_seconds, collisions_per_second), an _err beside each measured value, and the exact

@@ -14,8 +14,8 @@
 #include "gas/gas_options.hpp"
 #include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
-#include "gas/seed_ensemble.hpp"
 #include "gas/gas_session.hpp"
+#include "gas/seed_ensemble.hpp"
 #include "options/usage_error.hpp"
 #include "pack/pack_session.hpp"
 
@@ -175,9 +175,9 @@ py::object eos(const std::vector<py::object>& etas, const py::object& n,
     if (seed_count == 1) {
       points.push_back(cli::gas_json(specs[first], outcomes[first]));
     } else {
-      points.push_back(
-          cli::seeded_point_json(std::span<const cli::GasSpec>(specs).subspan(first, seed_count),
-                                 std::span<const cli::GasOutcome>(outcomes).subspan(first, seed_count)));
+      points.push_back(cli::seeded_point_json(
+          std::span<const cli::GasSpec>(specs).subspan(first, seed_count),
+          std::span<const cli::GasOutcome>(outcomes).subspan(first, seed_count)));
     }
   }
   return json_value(nlohmann::json{{"points", points}}.dump());

@@ -119,9 +119,9 @@ TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
 test: deps test-dev test-clang-asan test-tsan fuzz-smoke format-check lint-and-web
 	echo "make test: all checks passed"
 
-# clang-tidy and the browser tests side by side: the browser tests keep about one core busy (one
-# page at a time), so beside them lint's two clang-tidy processes take what the other core leaves
-# (docs/design.md, "CI time"). Each one's output is shown whole when it ends.
+# clang-tidy and the browser tests side by side: the browser tests keep about half a core busy
+# (two files at a time, mostly waiting on pages), so beside them lint's two clang-tidy processes
+# take what is left (docs/design.md, "CI time"). Each one's output is shown whole when it ends.
 .PHONY: lint-and-web
 lint-and-web:
 	$(MAKE) --no-print-directory -j2 --output-sync=target lint $(TEST_WEB)
@@ -321,12 +321,14 @@ playground: wasm
 # End-to-end tests in Debian's chromium; screenshots go to build/web-test-output/. The native
 # carom CLI is the reference the "Two moving balls" page is compared with: the dev build's, which
 # make test has built already (its results are bit-identical to release's: -ffp-contract=off).
+# Two test files run at once, each with its own browser and server: a page spends most of its
+# time waiting (loading, animation frames), so one file at a time leaves more than a core idle.
 WEB_TEST_CAROM := build/dev/apps/carom/carom
 test-web: deps wasm $(WEB_NODE_MODULES)
 	test -x /usr/bin/chromium || { echo "carom: chromium is missing: sudo apt-get install -y chromium"; exit 1; }
 	cmake --preset dev >/dev/null
 	cmake --build --preset dev --target carom_cli
-	cd web && CAROM_CLI=$(CURDIR)/$(WEB_TEST_CAROM) node --test --test-concurrency=1 tests/
+	cd web && CAROM_CLI=$(CURDIR)/$(WEB_TEST_CAROM) node --test --test-concurrency=2 tests/
 
 # Frame times of "Many balls" with 10⁴ balls (and 10³ beside it) in headless chromium.
 bench-web: wasm $(WEB_NODE_MODULES)

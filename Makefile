@@ -20,9 +20,10 @@ RUN_PACKAGES := cmake ninja-build g++ nlohmann-json3-dev libcli11-dev libfmt-dev
                 libcairo2-dev pkg-config ffmpeg
 # make test and the rest (`make deps`) install everything CI needs as well: the second compiler
 # and its sanitizer runtimes, clang-format and clang-tidy, GoogleTest and Google Benchmark, the
-# peers.
+# peers, and Open MPI (carom eos across ranks, tested under mpirun).
 PACKAGES := $(RUN_PACKAGES) clang clang-format clang-tidy libclang-rt-14-dev \
-            libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev $(PYTHON_PACKAGES)
+            libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libopenmpi-dev openmpi-bin \
+            $(PYTHON_PACKAGES)
 
 # make python: the module (pybind11, NumPy), its tests (pytest), GSD trajectories (gsd) and the
 # examples' plots (matplotlib), all from Debian; Debian's python3 imports what is installed under

@@ -102,7 +102,8 @@ TEST(EosSeeds, TheErrorBetweenSeedsAgreesWithTheBlockErrorWhereBlocksAreLong) {
   const ToolRun run = run_carom({"eos", "--eta", "0.3:0.5:0.2", "--n", "100", "--equilibrate", "20",
                                  "--collisions", "200", "--seeds", "8", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const json& point : json::parse(run.out)["points"]) {
+  const json out = json::parse(run.out);
+  for (const json& point : out["points"]) {
     const double ratio = point["Z_seed_err"].get<double>() / point["Z_err"].get<double>();
     EXPECT_GT(ratio, 0.42) << "eta " << point["eta"];
     EXPECT_LT(ratio, 1.62) << "eta " << point["eta"];

@@ -36,11 +36,11 @@ class CaptureFile {
 
 namespace {
 
-// Starts the tool (CAROM_CLI_PATH) with args, its stdin read from in_fd and its stdout and stderr
-// sent to the given descriptors, each /dev/null for -1; the child's pid, or -1 if it cannot be
-// started.
-pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd, int in_fd = -1) {
-  std::vector<std::string> words{CAROM_CLI_PATH};
+// Starts program with args, its stdin read from in_fd and its stdout and stderr sent to the given
+// descriptors, each /dev/null for -1; the child's pid, or -1 if it cannot be started.
+pid_t spawn_program(const std::string& program, const std::vector<std::string>& args, int out_fd,
+                    int err_fd, int in_fd = -1) {
+  std::vector<std::string> words{program};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   argv.reserve(words.size() + 1);
@@ -70,9 +70,31 @@ pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd, 
   return spawned == 0 ? child : -1;
 }
 
+// The same for the tool (CAROM_CLI_PATH).
+pid_t spawn_carom(const std::vector<std::string>& args, int out_fd, int err_fd, int in_fd = -1) {
+  return spawn_program(CAROM_CLI_PATH, args, out_fd, err_fd, in_fd);
+}
+
 }  // namespace
 
 pid_t start_carom(const std::vector<std::string>& args) { return spawn_carom(args, -1, -1); }
+
+pid_t start_program(const std::string& program, const std::vector<std::string>& args) {
+  return spawn_program(program, args, -1, -1);
+}
+
+ToolRun run_program(const std::string& program, const std::vector<std::string>& args) {
+  const ScratchDir streams;
+  const CaptureFile out(streams, "stdout");
+  const CaptureFile err(streams, "stderr");
+  const pid_t child = spawn_program(program, args, out.fd(), err.fd());
+  if (child < 0) throw std::runtime_error("cannot run " + program);
+  ToolRun run;
+  run.exit_code = wait_for_exit(child);
+  run.out = out.content();
+  run.err = err.content();
+  return run;
+}
 
 int wait_for_exit(pid_t child) {
   int status = 0;
@@ -172,6 +194,14 @@ std::string read_file(const std::filesystem::path& path) {
   std::ostringstream content;
   content << in.rdbuf();
   return content.str();
+}
+
+std::size_t json_files_in(const std::filesystem::path& folder) {
+  std::size_t count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() == ".json") ++count;
+  }
+  return count;
 }
 
 }  // namespace carom::cli::test

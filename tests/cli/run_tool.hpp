@@ -27,6 +27,10 @@ struct ToolRun {
 
 // Starts the tool with args without waiting for it, its output discarded; -1 if it cannot start.
 [[nodiscard]] pid_t start_carom(const std::vector<std::string>& args);
+// Any program (mpirun) run the same ways: waited for with its output kept, or started in the
+// background with its output discarded.
+[[nodiscard]] ToolRun run_program(const std::string& program, const std::vector<std::string>& args);
+[[nodiscard]] pid_t start_program(const std::string& program, const std::vector<std::string>& args);
 // Waits for a tool started so: its exit status, or -1 if it did not exit normally.
 [[nodiscard]] int wait_for_exit(pid_t child);
 
@@ -75,5 +79,7 @@ class ScratchDir {
 
 // The whole content of a file ("" if it cannot be read).
 [[nodiscard]] std::string read_file(const std::filesystem::path& path);
+// How many .json files folder holds (a sweep's checkpoints).
+[[nodiscard]] std::size_t json_files_in(const std::filesystem::path& folder);
 
 }  // namespace carom::cli::test

@@ -16,6 +16,7 @@
 #include "carom/science/exact.hpp"
 #include "commands/gas_command.hpp"
 #include "drawing/science_plot.hpp"
+#include "gas/eos_sweep.hpp"
 #include "gas/gas_options.hpp"
 #include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
@@ -25,6 +26,7 @@
 #include "options/option_value.hpp"
 #include "options/readable_number.hpp"
 #include "options/usage_error.hpp"
+#include "system/mpi_job.hpp"
 #include "system/output_file.hpp"
 #include "system/progress_bar.hpp"
 #include "system/stop_signals.hpp"
@@ -237,28 +239,58 @@ int run(const EosOptions& options) {
   const std::uint64_t seeds = parse_seed_count(options.seeds);
   // One gas run for each point and seed, point by point (with one seed, the points themselves).
   std::vector<GasSpec> runs = seeded_specs(specs, seeds);
+  // With --out, each run is kept in DIR/points as it ends, and one kept there before is read.
+  std::string points_folder;
+  if (!options.out.empty()) {
+    points_folder = (std::filesystem::path(options.out) / "points").string();
+    std::error_code error;
+    std::filesystem::create_directories(points_folder, error);
+    if (error) {
+      std::cerr << "carom eos: error: --out \"" << options.out
+                << "\": cannot create it: " << error.message() << '\n';
+      return kExitUsage;
+    }
+  }
   // A signal stops every point's world; the points completed are written.
   const StopOnSignals stop_on_signals;
-  GasPointsOutcome run;
+  EosSweepOutcome sweep;
   {
-    ProgressBar bar(true);
-    run = run_gas_points(runs, threads, &StopOnSignals::requested,
-                         [&bar](double fraction) { bar.update(fraction, ""); });
+    ProgressBar bar(MpiJob::get().is_root());
+    sweep = run_sweep(runs, threads, points_folder, &StopOnSignals::requested,
+                      [&bar](double fraction) { bar.update(fraction, ""); });
   }
-  std::vector<GasOutcome>& outcomes = run.outcomes;
-  for (const std::exception_ptr& failure : run.failures) {
-    if (failure) std::rethrow_exception(failure);
+  // Under MPI, rank 0 alone reports and writes; the other ranks are done.
+  if (!sweep.leads) return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;
+  if (sweep.read > 0) {
+    std::cerr << "carom eos: " << sweep.read << " of " << runs.size() << " runs read from "
+              << points_folder << ", where an earlier sweep kept them\n";
   }
-  // After a signal, the points whose every seed completed before it; otherwise all of them.
+  for (const std::string& failure : sweep.not_kept) {
+    std::cerr << "carom eos: warning: a finished run was not kept: " << failure << '\n';
+  }
+  std::vector<GasOutcome>& outcomes = sweep.runs.outcomes;
+  // A run that failed is reported with its error; its point is left out and the others kept.
+  bool failed = false;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!sweep.runs.failures[i]) continue;
+    failed = true;
+    try {
+      std::rethrow_exception(sweep.runs.failures[i]);
+    } catch (const std::exception& error) {
+      std::cerr << "carom eos: error: the run at eta = " << readable(runs[i].eta) << ", seed "
+                << runs[i].seed << " failed: " << error.what() << '\n';
+    }
+  }
+  // After a signal or a failure, the points whose every seed completed; otherwise all of them.
   const std::size_t all_points = specs.size();
-  if (StopOnSignals::requested()) {
+  if (StopOnSignals::requested() || failed) {
     std::vector<GasSpec> kept_runs;
     std::vector<GasOutcome> kept_outcomes;
     std::size_t kept_points = 0;
     for (std::size_t first = 0; first < runs.size(); first += seeds) {
       bool complete = true;
       for (std::size_t k = first; k < first + seeds; ++k) {
-        complete = complete && run.completed[k] != 0;
+        complete = complete && sweep.runs.completed[k] != 0;
       }
       if (!complete) continue;
       ++kept_points;
@@ -270,10 +302,11 @@ int run(const EosOptions& options) {
     }
     runs = std::move(kept_runs);
     outcomes = std::move(kept_outcomes);
-    std::cerr << "carom eos: " << StopOnSignals::what() << " with " << kept_points << " of "
-              << all_points << " points complete"
+    std::cerr << "carom eos: "
+              << (StopOnSignals::requested() ? StopOnSignals::what() + " with " : std::string())
+              << kept_points << " of " << all_points << " points complete"
               << (runs.empty() ? ": nothing to write\n" : "; the outputs hold those\n");
-    if (runs.empty()) return StopOnSignals::exit_code();
+    if (runs.empty()) return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitFailure;
   }
   std::vector<EosPoint> points;
   for (std::size_t first = 0; first < runs.size(); first += seeds) {
@@ -283,13 +316,6 @@ int run(const EosOptions& options) {
   const bool seeded = seeds > 1;
 
   if (!options.out.empty()) {
-    std::error_code error;
-    std::filesystem::create_directories(options.out, error);
-    if (error) {
-      std::cerr << "carom eos: error: --out \"" << options.out
-                << "\": cannot create it: " << error.message() << '\n';
-      return kExitUsage;
-    }
     const std::vector<std::pair<std::string, std::string>> files{
         {"eos.csv", seeded ? seeded_csv(points) : eos_csv(runs, outcomes)},
         {"eos.md", seeded ? seeded_table(points) : table(runs, outcomes)},
@@ -312,7 +338,8 @@ int run(const EosOptions& options) {
   } else {
     std::cout << (seeded ? seeded_table(points) : table(runs, outcomes));
   }
-  return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;
+  if (StopOnSignals::requested()) return StopOnSignals::exit_code();
+  return failed ? kExitFailure : kExitSuccess;
 }
 
 }  // namespace

@@ -27,7 +27,8 @@ std::uint64_t parse_eos_threads(const std::string& text) {
 }
 
 GasPointsOutcome run_gas_points(const std::vector<GasSpec>& specs, std::size_t threads,
-                                const GasStopAsked& stop, const GasPointsWatch& watch) {
+                                const GasStopAsked& stop, const GasPointsWatch& watch,
+                                const GasPointDone& point_done) {
   GasPointsOutcome result;
   result.outcomes.resize(specs.size());
   result.failures.resize(specs.size());
@@ -49,6 +50,7 @@ GasPointsOutcome run_gas_points(const std::vector<GasSpec>& specs, std::size_t t
         result.outcomes[i] = run_gas_session(
             specs[i], [&done, i](double fraction) { done[i].store(fraction); }, stop_once);
         result.completed[i] = result.outcomes[i].interrupted ? 0 : 1;
+        if (point_done && result.completed[i] != 0) point_done(i, result.outcomes[i]);
       } catch (...) {
         result.failures[i] = std::current_exception();
       }

@@ -24,6 +24,10 @@ struct GasPointsOutcome {
 // got together (0 to 1); the place to draw a progress bar or to look for a signal.
 using GasPointsWatch = std::function<void(double fraction)>;
 
+// Told on the worker thread, as soon as it ends, of every run that ended uninterrupted: its index
+// in the specs and its outcome (the place to keep it in a checkpoint file). It must not throw.
+using GasPointDone = std::function<void(std::size_t index, const GasOutcome& outcome)>;
+
 // The number of points run at once, from --threads: 1 to 256; throws UsageError otherwise.
 [[nodiscard]] std::uint64_t parse_eos_threads(const std::string& text);
 
@@ -31,6 +35,7 @@ using GasPointsWatch = std::function<void(double fraction)>;
 // answers true no new point starts and the running ones stop within a few thousand events.
 [[nodiscard]] GasPointsOutcome run_gas_points(const std::vector<GasSpec>& specs,
                                               std::size_t threads, const GasStopAsked& stop,
-                                              const GasPointsWatch& watch);
+                                              const GasPointsWatch& watch,
+                                              const GasPointDone& point_done = {});
 
 }  // namespace carom::cli

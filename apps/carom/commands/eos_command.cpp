@@ -121,6 +121,18 @@ std::string eos_csv(const std::vector<GasSpec>& specs, const std::vector<GasOutc
   return out.str();
 }
 
+// Henderson's Z(η) from low to high, drawn as a line of 101 points.
+PlotSeries henderson_curve(double low, double high) {
+  PlotSeries henderson{"Henderson (1 + η²/8)/(1 − η)²", "#d62728", {}, {}, {}, false, false};
+  constexpr int kCurvePoints = 100;
+  for (int k = 0; k <= kCurvePoints; ++k) {
+    const double eta = low + (high - low) * k / kCurvePoints;
+    henderson.x.push_back(eta);
+    henderson.y.push_back(science::henderson_z(eta));
+  }
+  return henderson;
+}
+
 std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOutcome>& outcomes) {
   PlotSpec plot{"Equation of state of hard disks, Z = PA/(NkT)",
                 "N = " + std::to_string(specs.front().n) + ", seed " +
@@ -135,16 +147,7 @@ std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOut
     measured.y.push_back(outcomes[i].results.z.mean);
     measured.error.push_back(outcomes[i].results.z.error);
   }
-  PlotSeries henderson{"Henderson (1 + η²/8)/(1 − η)²", "#d62728", {}, {}, {}, false, false};
-  const double low = specs.front().eta;
-  const double high = specs.back().eta;
-  constexpr int kCurvePoints = 100;
-  for (int k = 0; k <= kCurvePoints; ++k) {
-    const double eta = low + (high - low) * k / kCurvePoints;
-    henderson.x.push_back(eta);
-    henderson.y.push_back(science::henderson_z(eta));
-  }
-  plot.series.push_back(henderson);
+  plot.series.push_back(henderson_curve(specs.front().eta, specs.back().eta));
   plot.series.push_back(measured);
   return render_plot(plot);
 }
@@ -186,11 +189,9 @@ std::string seeded_csv(const std::vector<EosPoint>& points) {
   for (const EosPoint& point : points) {
     const SeededPoint p = combine_seeds(point.runs);
     const double eta = point.specs.front().eta;
-    out << eta << ',' << point.runs.size();
-    for (const SeedEstimate* e : {&p.z}) {
-      out << ',' << e->mean << ',' << e->block_error << ',' << e->seed_error;
-    }
-    out << ',' << science::henderson_z(eta) << ',' << p.collisions << ',' << p.time;
+    out << eta << ',' << point.runs.size() << ',' << p.z.mean << ',' << p.z.block_error << ','
+        << p.z.seed_error << ',' << science::henderson_z(eta) << ',' << p.collisions << ','
+        << p.time;
     for (const SeedEstimate* e : {&p.collision_rate, &p.g_contact, &p.psi6, &p.diffusion}) {
       out << ',' << e->mean << ',' << e->block_error << ',' << e->seed_error;
     }
@@ -215,16 +216,8 @@ std::string seeded_plot(const std::vector<EosPoint>& points) {
     measured.y.push_back(p.z.mean);
     measured.error.push_back(p.z.seed_error);
   }
-  PlotSeries henderson{"Henderson (1 + η²/8)/(1 − η)²", "#d62728", {}, {}, {}, false, false};
-  const double low = points.front().specs.front().eta;
-  const double high = points.back().specs.front().eta;
-  constexpr int kCurvePoints = 100;
-  for (int k = 0; k <= kCurvePoints; ++k) {
-    const double eta = low + (high - low) * k / kCurvePoints;
-    henderson.x.push_back(eta);
-    henderson.y.push_back(science::henderson_z(eta));
-  }
-  plot.series.push_back(henderson);
+  plot.series.push_back(
+      henderson_curve(points.front().specs.front().eta, points.back().specs.front().eta));
   plot.series.push_back(measured);
   return render_plot(plot);
 }

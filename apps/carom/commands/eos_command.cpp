@@ -158,6 +158,7 @@ std::string eos_plot(const std::vector<GasSpec>& specs, const std::vector<GasOut
 struct EosPoint {
   std::span<const GasSpec> specs;
   std::span<const GasOutcome> runs;
+  SeededPoint combined;  // combine_seeds(runs): once, for the table, the CSV and the plot
 };
 
 std::string seeded_table(const std::vector<EosPoint>& points) {
@@ -166,7 +167,7 @@ std::string seeded_table(const std::vector<EosPoint>& points) {
          "|\n";
   out << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const EosPoint& point : points) {
-    const SeededPoint p = combine_seeds(point.runs);
+    const SeededPoint& p = point.combined;
     const double eta = point.specs.front().eta;
     const double henderson = science::henderson_z(eta);
     const double error = std::max(p.z.block_error, p.z.seed_error);
@@ -187,7 +188,7 @@ std::string seeded_csv(const std::vector<EosPoint>& points) {
          "collision_rate_err,collision_rate_seed_err,g_contact,g_contact_err,g_contact_seed_err,"
          "psi6,psi6_err,psi6_seed_err,diffusion,diffusion_err,diffusion_seed_err\n";
   for (const EosPoint& point : points) {
-    const SeededPoint p = combine_seeds(point.runs);
+    const SeededPoint& p = point.combined;
     const double eta = point.specs.front().eta;
     out << eta << ',' << point.runs.size() << ',' << p.z.mean << ',' << p.z.block_error << ','
         << p.z.seed_error << ',' << science::henderson_z(eta) << ',' << p.collisions << ','
@@ -211,7 +212,7 @@ std::string seeded_plot(const std::vector<EosPoint>& points) {
                 {}};
   PlotSeries measured{"carom gas", "#1f77b4", {}, {}, {}, true, false};
   for (const EosPoint& point : points) {
-    const SeededPoint p = combine_seeds(point.runs);
+    const SeededPoint& p = point.combined;
     measured.x.push_back(point.specs.front().eta);
     measured.y.push_back(p.z.mean);
     measured.error.push_back(p.z.seed_error);
@@ -303,8 +304,9 @@ int run(const EosOptions& options) {
   }
   std::vector<EosPoint> points;
   for (std::size_t first = 0; first < runs.size(); first += seeds) {
-    points.push_back({std::span<const GasSpec>(runs).subspan(first, seeds),
-                      std::span<const GasOutcome>(outcomes).subspan(first, seeds)});
+    const auto point_runs = std::span<const GasOutcome>(outcomes).subspan(first, seeds);
+    points.push_back({std::span<const GasSpec>(runs).subspan(first, seeds), point_runs,
+                      combine_seeds(point_runs)});
   }
   const bool seeded = seeds > 1;
 

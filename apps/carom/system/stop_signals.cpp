@@ -53,7 +53,12 @@ StopOnSignals::StopOnSignals() {
   install(on_stop_signal);
 }
 
-StopOnSignals::~StopOnSignals() { install(SIG_DFL); }
+// After a signal the tool is on its way out: the handler stays, so that a second signal during
+// the last clean-up still removes the temporary files and exits with 128 + signal, rather than
+// killing the process with its temporaries left behind.
+StopOnSignals::~StopOnSignals() {
+  if (g_first_signal.load() == 0) install(SIG_DFL);
+}
 
 bool StopOnSignals::requested() noexcept { return g_first_signal.load() != 0; }
 

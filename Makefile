@@ -117,15 +117,21 @@ TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
 # Each compiler builds everything once: g++ in test-dev (the suite at full speed, benchmarks'
 # smoke runs included), clang++ in test-clang-asan (the suite again under ASan + UBSan). Timings
 # and reasoning: docs/design.md, "CI time".
-test: deps test-dev test-clang-asan test-tsan fuzz-smoke format-check lint-and-web
+test: deps test-dev test-clang-asan format-check checks-beside-web
 	echo "make test: all checks passed"
 
-# clang-tidy and the browser tests side by side: the browser tests keep about half a core busy
-# (two files at a time, mostly waiting on pages), so beside them lint's two clang-tidy processes
-# take what is left (docs/design.md, "CI time"). Each one's output is shown whole when it ends.
-.PHONY: lint-and-web
-lint-and-web:
-	$(MAKE) --no-print-directory -j2 --output-sync=target lint $(TEST_WEB)
+# The browser tests beside the rest: they keep about half a core busy (two files at a time,
+# mostly waiting on pages, which they wait for by what a page shows, never by a fixed time), so
+# clang-tidy, then the ThreadSanitizer test, then the fuzzers' bounded runs take what is left, one
+# after another (docs/design.md, "CI time"). Each side's output is shown whole when it ends.
+.PHONY: checks-beside-web lint-tsan-fuzz
+checks-beside-web:
+	$(MAKE) --no-print-directory -j2 --output-sync=target lint-tsan-fuzz $(TEST_WEB)
+
+lint-tsan-fuzz:
+	$(MAKE) --no-print-directory lint
+	$(MAKE) --no-print-directory test-tsan
+	$(MAKE) --no-print-directory fuzz-smoke
 
 test-dev:
 	cmake --preset dev

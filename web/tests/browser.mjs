@@ -70,3 +70,24 @@ async function loadRecordingProblems(session, page, path) {
 export async function readout(page, key) {
   return (await page.textContent(`[data-readout="${key}"]`)).trim();
 }
+
+// Waits until check() (async, run here) returns true: a page changes what it shows on its next
+// frame or report, and a loaded machine gives fewer frames a second, so a test waits for the
+// change itself, never for a fixed time. Fails with describe()'s text (the last state seen).
+export async function eventually(check, describe, timeout = 20000) {
+  const deadline = Date.now() + timeout;
+  while (!(await check())) {
+    if (Date.now() > deadline) throw new Error(`not within ${timeout} ms: ${await describe()}`);
+    await new Promise((done) => setTimeout(done, 20));
+  }
+}
+
+// Waits until the readout `key` shows `expected` (a string, or a RegExp it must match) and
+// returns its text.
+export async function expectReadout(page, key, expected, timeout = 20000) {
+  const shows = (text) => (expected instanceof RegExp ? expected.test(text) : text === expected);
+  let text = await readout(page, key);
+  await eventually(async () => shows(text = await readout(page, key)),
+                   () => `the readout ${key} shows '${text}', not ${expected}`, timeout);
+  return text;
+}

@@ -6,7 +6,7 @@
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {OUTPUT, eventually, openBrowser, openPage, readout} from './browser.mjs';
 
 // A hundred disks jam after about 400 frames (7 s at 60 frames a second); a loaded machine gives
 // fewer frames a second.
@@ -21,7 +21,10 @@ async function openJammed(query) {
   const opened = await openPage(session, `compress.html?${query}`);
   await opened.page.waitForFunction(() => window.caromCompression.jammed !== null, null,
                                     {timeout: JAM_TIMEOUT_MS, polling: 200});
-  await opened.page.waitForTimeout(300);  // a report after the jam
+  // The report after the jam.
+  await opened.page.waitForFunction(
+      () => document.getElementById('status').dataset.state === 'jammed', null,
+      {timeout: JAM_TIMEOUT_MS, polling: 50});
   return opened;
 }
 
@@ -125,8 +128,9 @@ test('stopping keeps the disks\' size; New start and the cell menu start again',
   await page.click('#compress');
   assert.equal(await page.textContent('#compress'), 'Compress');
   const stopped = await state(page);
-  await page.waitForTimeout(500);
-  const later = await state(page);
+  let later;
+  await eventually(async () => (later = await state(page)).time > stopped.time,
+                   () => `the gas stands still at t = ${later.time}`);
   assert.equal(later.growth, 0);
   assert.equal(later.eta, stopped.eta);
   assert.ok(later.time > stopped.time, 'the gas runs on');

@@ -6,7 +6,7 @@
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {OUTPUT, expectReadout, openBrowser, openPage, readout} from './browser.mjs';
 
 // At 60 frames a second the first balls land after about 3 s; a loaded machine gives fewer frames.
 const RUN_TIMEOUT_MS = 120000;
@@ -55,7 +55,9 @@ test('poured balls land in the bins and the histogram counts exactly the balls l
   const {page, problems} = await openPage(session, 'galton.html?rate=20');
   await page.waitForFunction((n) => window.caromGalton.landed >= n, LANDED_WANTED,
                              {timeout: RUN_TIMEOUT_MS, polling: 200});
-  await page.waitForTimeout(300);  // a report or two after the last landing counted
+  await page.waitForFunction(  // the report after the last landing counted
+      (n) => Number(document.querySelector('[data-readout="landed"]').textContent) >= n,
+      LANDED_WANTED, {timeout: RUN_TIMEOUT_MS, polling: 50});
   const s = await state(page);
   assert.equal(s.error, '');
   assert.equal(s.stalled, false);
@@ -98,10 +100,9 @@ test('the pour stops and starts, and Reset empties the board', {timeout: RUN_TIM
   await page.waitForTimeout(500);
   assert.equal(await page.evaluate(() => window.caromGalton.poured), stopped);
   await page.click('#reset');
-  await page.waitForTimeout(300);
+  await expectReadout(page, 'poured', '0 of 1000');
   const s = await state(page);
   assert.deepEqual([s.poured, s.landed, sum(s.bars), s.landedShown], [0, 0, 0, 0]);
-  assert.equal(await readout(page, 'poured'), '0 of 1000');
   await page.click('#pour');
   await page.waitForFunction(() => window.caromGalton.poured >= 3, null,
                              {timeout: RUN_TIMEOUT_MS, polling: 100});

@@ -8,7 +8,8 @@
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, openTouchPage, readout} from './browser.mjs';
+import {OUTPUT, eventually, expectReadout, openBrowser, openPage, openTouchPage, readout}
+    from './browser.mjs';
 
 // The ball drains after about 10 s of table time; a loaded machine gives fewer frames.
 const RUN_TIMEOUT_MS = 120000;
@@ -62,6 +63,17 @@ function flipperTips(page, side) {
 
 const near = (p, q) => Math.abs(p.x - q.x) < 1e-9 && Math.abs(p.y - q.y) < 1e-9;
 
+// Waits until flipper `side`'s tip stands still at its up stop or at rest (`where`).
+async function tipComesTo(page, side, where) {
+  let tips;
+  await eventually(async () => {
+    tips = await flipperTips(page, side);
+    return near(tips.now, tips[where]) && !tips.moving;
+  }, () => `flipper ${side}'s tip is at (${tips.now.x}, ${tips.now.y}), not ${where} at ` +
+           `(${tips[where].x}, ${tips[where].y})`);
+  return tips;
+}
+
 function table(page) {
   return page.evaluate(() => {
     const p = window.caromPinball;
@@ -108,8 +120,7 @@ test('a launched ball goes round the table, stays on it, loses energy only in bo
   // Between the launch and the drain the total can only fall (no flipper moved).
   const {compared} = checkEnergy(await page.evaluate(() => window.caromPinball.energyLog));
   assert.ok(compared > 100, `${compared} frames compared`);
-  await page.waitForTimeout(200);
-  assert.equal(await readout(page, 'drained'), '1');
+  await expectReadout(page, 'drained', '1');
   assert.equal(await readout(page, 'in_play'), '0');
   assert.deepEqual(problems, []);
   await page.close();
@@ -122,14 +133,10 @@ test('a flipper key swings it up, it cradles a ball, and a second flip sends the
   const {rest, up: stop} = await flipperTips(page, 0);
   assert.ok(near(await tip(), rest), 'the flipper starts at rest');
   await page.keyboard.down('z');
-  await page.waitForTimeout(300);
   // Turned up about its pivot to its stop exactly (the swing ends inside a frame, no overshoot),
   // the tip 2.6 diameters higher, and standing still there.
-  const raised = await flipperTips(page, 0);
-  assert.ok(near(raised.now, stop), `the tip is at (${raised.now.x}, ${raised.now.y}), not at ` +
-            `its stop (${stop.x}, ${stop.y})`);
+  await tipComesTo(page, 0, 'up');
   assert.ok(stop.y > rest.y + 2.4, `the stop is at ${stop.y}`);
-  assert.ok(!raised.moving, 'a flipper held up stands still');
   // A ball dropped onto the raised flipper rolls down it into the cradle by the slope wall.
   const [ball, dropTime] = await page.evaluate(() => {
     const p = window.caromPinball;
@@ -187,37 +194,26 @@ test('a flipper key swings it up, it cradles a ball, and a second flip sends the
 test('a Flip button holds its flipper up while pressed, and a ball drains between raised flippers',
      async () => {
   const {page, problems} = await openPage(session, 'pinball.html');
-  const right = await flipperTips(page, 1);
   await page.hover('#flip-right');
   await page.mouse.down();
   await page.keyboard.down('ArrowLeft');
-  await page.waitForTimeout(300);
-  const [left, raised] = [await flipperTips(page, 0), await flipperTips(page, 1)];
-  assert.ok(near(raised.now, right.up), `the right tip is at (${raised.now.x}, ${raised.now.y})`);
-  assert.ok(near(left.now, left.up), `the left tip is at (${left.now.x}, ${left.now.y})`);
+  await tipComesTo(page, 1, 'up');
+  await tipComesTo(page, 0, 'up');
   // Straight down the middle, between the raised tips: the drain takes it.
   await page.evaluate(() => {
     const p = window.caromPinball;
     p.dropBall({x: p.table.upper.x / 2 - 0.75, y: 10});
   });
-  await page.waitForFunction(() => window.caromPinball.drained === 1, null, {timeout: 10000});
+  await page.waitForFunction(() => window.caromPinball.drained === 1, null, {timeout: 60000});
   assert.deepEqual(await page.evaluate(() => window.caromPinball.inPlay), []);
   await page.mouse.up();
   await page.keyboard.up('ArrowLeft');
-  await page.waitForTimeout(200);
-  for (const side of [0, 1]) {
-    const tips = await flipperTips(page, side);
-    assert.ok(near(tips.now, tips.rest), `flipper ${side} is back at (${tips.now.x}, ` +
-              `${tips.now.y}), not at rest (${tips.rest.x}, ${tips.rest.y})`);
-    assert.ok(!tips.moving);
-  }
+  for (const side of [0, 1]) await tipComesTo(page, side, 'rest');
   // A key let go while the page has no focus: leaving the page drops the flipper all the same.
   await page.keyboard.down('z');
-  await page.waitForTimeout(200);
-  assert.ok(near((await flipperTips(page, 0)).now, left.up));
+  await tipComesTo(page, 0, 'up');
   await page.evaluate(() => window.dispatchEvent(new Event('blur')));
-  await page.waitForTimeout(200);
-  assert.ok(near((await flipperTips(page, 0)).now, left.rest), 'the flipper stayed up');
+  await tipComesTo(page, 0, 'rest');
   await page.keyboard.up('z');
   assert.deepEqual(problems, []);
   await page.close();
@@ -232,14 +228,16 @@ test('on a touch screen a finger held on a Flip button holds the flipper up, eve
   const finger = (type, dx = 0) => touch.send('Input.dispatchTouchEvent', {
     type, touchPoints: type === 'touchEnd' ? [] : [{x: x + dx, y: y + dx}]});
   await finger('touchStart');
-  await page.waitForTimeout(200);
-  // A slide that would start a scroll (and cancel the press) where the page may scroll.
+  await tipComesTo(page, 0, 'up');
+  // A slide that would start a scroll (and cancel the press) where the page may scroll. Frames
+  // are counted from here: a cancelled press would bring the tip back to rest within 9.
+  await page.evaluate(() => window.caromPinball.pause());
   for (let d = 2; d <= 12; d += 2) await finger('touchMove', d);
-  await page.waitForTimeout(200);
+  await page.evaluate(() => window.caromPinball.advanceFrames(12));
   const held = await flipperTips(page, 0);
   assert.ok(near(held.now, held.up), `the tip is at (${held.now.x}, ${held.now.y})`);
   await finger('touchEnd');
-  await page.waitForTimeout(200);
+  await page.evaluate(() => window.caromPinball.advanceFrames(12));
   const released = await flipperTips(page, 0);
   assert.ok(near(released.now, released.rest),
             `the tip is at (${released.now.x}, ${released.now.y})`);
@@ -321,7 +319,7 @@ test('a moving wall from JavaScript: its motion, its drawing where it is now, an
 test('the space bar launches, the readout adds up, and Reset clears the table', async () => {
   const {page, problems} = await openPage(session, 'pinball.html');
   await page.keyboard.press('Space');
-  await page.waitForTimeout(400);
+  await expectReadout(page, 'launched', '1');
   // In one go: the readout changes every few frames.
   const texts = await page.evaluate(() => Object.fromEntries(
       [...document.querySelectorAll('[data-readout]')].map((e) => [e.dataset.readout,
@@ -332,9 +330,8 @@ test('the space bar launches, the readout adds up, and Reset clears the table', 
   assert.ok(Math.abs(Number(texts.total) - total) < 1e-5 * Math.abs(total), JSON.stringify(texts));
   assert.ok(Number(texts.potential) > 0, 'a ball above the table\'s foot has potential energy');
   await page.click('#reset');
-  await page.waitForTimeout(200);
+  await expectReadout(page, 'launched', '0');
   assert.equal(await readout(page, 'in_play'), '0');
-  assert.equal(await readout(page, 'launched'), '0');
   assert.deepEqual(problems, []);
   await page.close();
 });

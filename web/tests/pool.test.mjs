@@ -11,7 +11,7 @@
 import assert from 'node:assert/strict';
 import {after, before, test} from 'node:test';
 
-import {OUTPUT, openBrowser, openPage, readout} from './browser.mjs';
+import {OUTPUT, eventually, expectReadout, openBrowser, openPage, readout} from './browser.mjs';
 import {mouseDrag} from './drag.mjs';
 
 const TIGHT = 1e-12;  // m: the rounding of a few operations on numbers of about a metre
@@ -130,8 +130,7 @@ test('the ghost ball of an aim at ball 1 is where the centres are two radii apar
             `met at ${p.first.time}`);
   assert.ok(p.rests, 'the shot comes to rest');
   // The readout names it and shows the ghost to its digits.
-  await page.waitForTimeout(100);
-  assert.equal(await readout(page, 'target'), 'ball 1');
+  await expectReadout(page, 'target', 'ball 1');
   assert.equal(await readout(page, 'ghost'),
                `(${Number(ghost.x.toPrecision(5))}, ${Number(ghost.y.toPrecision(5))})`);
   assert.match(await readout(page, 'launch'), /^4\.56 m\/s, sliding$/);
@@ -161,8 +160,11 @@ test('a drag from the cue ball sets the aim and its speed', async () => {
   near(p.hit.center, ghostCentre(t.cueAt, direction, t.ballAt, t.cueRadius + t.ballRadius),
        TIGHT, 'the ghost ball');
   assert.ok(Math.abs(p.strike.direction - Math.atan2(direction.y, direction.x)) <= TIGHT);
-  await page.waitForTimeout(100);
-  assert.equal(await page.textContent('output[for="speed"]'), String(Number(p.speed.toPrecision(3))));
+  const speedShown = String(Number(p.speed.toPrecision(3)));
+  let speedText;
+  await eventually(async () => (speedText = await page.textContent('output[for="speed"]')) ===
+                                   speedShown,
+                   () => `the speed shows ${speedText}, not ${speedShown}`);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -182,8 +184,7 @@ test('a stun shot meets an empty cushion when a sliding ball would; the shot doe
   const v0 = norm(p.launch.velocity);
   const expected = stunTime(v0, t.cueAt.y - t.cueRadius, t.cloth);
   assert.ok(Math.abs(p.first.time - expected) <= CLOSE, `met at ${p.first.time}, not ${expected}`);
-  await page.waitForTimeout(100);
-  assert.equal(await readout(page, 'target'), 'bottom-left cushion');
+  await expectReadout(page, 'target', 'bottom-left cushion');
   await page.screenshot({path: `${OUTPUT}/pool-cushion.png`});
   await page.click('#shoot');
   await page.waitForFunction(() => window.caromPool.shot?.first, null, {timeout: SHOT_TIMEOUT_MS});
@@ -227,8 +228,7 @@ test('a strike 2/5 of the radius above the centre rolls at once; the tip diagram
   const english = await pressed(0.9, 0);
   assert.ok(Math.abs(norm({x: english.tip.side, y: english.tip.height}) - 0.5) <= 1e-12);
   assert.ok(english.launch.spin.z > 0, `right English: spin ${JSON.stringify(english.launch.spin)}`);
-  await page.waitForTimeout(100);
-  assert.equal(await readout(page, 'tip'), '0.5 R right');
+  await expectReadout(page, 'tip', '0.5 R right');
   await page.click('#centre-tip');
   assert.deepEqual(await page.evaluate(() => window.caromPool.tip), {side: 0, height: 0});
   // From the keyboard: the arrows move the tip a twentieth of the radius.
@@ -266,8 +266,7 @@ test('an aim at a corner pocket reports it; the potted cue ball comes back', asy
                      (t.cueRadius + t.pockets[pocket].radius)) <= TIGHT);
   assert.equal(p.first.kind, 'pocket');
   assert.deepEqual(p.potted, [t.cue]);
-  await page.waitForTimeout(100);
-  assert.equal(await readout(page, 'target'), 'pocket bottom-left');
+  await expectReadout(page, 'target', 'pocket bottom-left');
   await page.click('#shoot');
   // Nothing else moves: the table comes to rest when the pocket takes the cue ball, and the cue
   // ball is put back.
@@ -311,8 +310,7 @@ test('a click stops a shot, spin and all; Rack racks; a break goes exactly as pr
   assert.ok(stopped.atRest, 'no ball spins on');
   assert.equal(stopped.audit, '');
   await page.click('#rack');
-  await page.waitForTimeout(100);
-  assert.equal(await readout(page, 'balls'), '16');
+  await expectReadout(page, 'balls', '16');
   const racked = await table(page, '1');
   near(racked.cueAt, t.cueAt, 0, 'the cue ball on its spot');
   near(racked.ballAt, t.ballAt, 0, 'ball 1 on its spot');
@@ -343,8 +341,7 @@ test('a click stops a shot, spin and all; Rack racks; a break goes exactly as pr
   for (const state of ['sliding', 'rolling', 'stationary']) {
     assert.ok(shot.states.includes(state), `no ball was ever ${state}: ${shot.states}`);
   }
-  await page.waitForTimeout(100);
-  assert.match(await readout(page, 'as_predicted'), /^yes/);
+  await expectReadout(page, 'as_predicted', /^yes/);
   assert.match(await readout(page, 'first'), /^ball 1 at .* \(predicted ball 1 at .*\)$/);
   assert.equal(await readout(page, 'shot'), 'every ball at rest');
   await page.screenshot({path: `${OUTPUT}/pool-rest.png`});

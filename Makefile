@@ -25,10 +25,10 @@ PACKAGES := $(RUN_PACKAGES) clang clang-format clang-tidy libclang-rt-14-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libopenmpi-dev openmpi-bin \
             $(PYTHON_PACKAGES)
 
-# make python: the module (pybind11, NumPy), its tests (pytest), GSD trajectories (gsd) and the
-# examples' plots (matplotlib), all from Debian; Debian's python3 imports what is installed under
+# make python: the module (pybind11, NumPy), its tests (pytest), GSD trajectories (gsd), carom.eos
+# across MPI ranks (mpi4py) and the examples' plots (matplotlib), all from Debian; Debian's python3 imports what is installed under
 # /usr/local/lib/python3.11/dist-packages.
-PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd \
+PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd python3-mpi4py \
                    python3-matplotlib
 PYTHON_PREFIX := /usr/local
 
@@ -122,16 +122,20 @@ test: deps test-dev test-clang-asan format-check checks-beside-web
 
 # The browser tests beside the rest: they keep about half a core busy (two files at a time,
 # mostly waiting on pages, which they wait for by what a page shows, never by a fixed time), so
-# clang-tidy, then the ThreadSanitizer test, then the fuzzers' bounded runs take what is left, one
-# after another (docs/design.md, "CI time"). Each side's output is shown whole when it ends.
-.PHONY: checks-beside-web lint-tsan-fuzz
+# clang-tidy and then the fuzzers' bounded runs take what is left, and the ThreadSanitizer test
+# follows the browser tests (docs/design.md, "CI time"). Each side's output is shown whole when it
+# ends.
+.PHONY: checks-beside-web lint-then-fuzz web-then-tsan
 checks-beside-web:
-	$(MAKE) --no-print-directory -j2 --output-sync=target lint-tsan-fuzz $(TEST_WEB)
+	$(MAKE) --no-print-directory -j2 --output-sync=target lint-then-fuzz web-then-tsan
 
-lint-tsan-fuzz:
+lint-then-fuzz:
 	$(MAKE) --no-print-directory lint
-	$(MAKE) --no-print-directory test-tsan
 	$(MAKE) --no-print-directory fuzz-smoke
+
+web-then-tsan:
+	$(if $(TEST_WEB),$(MAKE) --no-print-directory test-web)
+	$(MAKE) --no-print-directory test-tsan
 
 test-dev:
 	cmake --preset dev

@@ -5,12 +5,15 @@
 
 #include <atomic>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
+#include "comm_job.hpp"
+#include "gas/eos_sweep.hpp"
 #include "gas/gas_options.hpp"
 #include "gas/gas_points.hpp"
 #include "gas/gas_report.hpp"
@@ -57,33 +60,51 @@ py::object json_value(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
-// Runs the points as `carom eos` runs them, the GIL released. Ctrl-C stops every point within a
-// few thousand events (the calling thread looks for it ten times a second) and raises
-// KeyboardInterrupt; an error in a point is raised once all have stopped.
-std::vector<cli::GasOutcome> run_points(const std::vector<cli::GasSpec>& specs,
-                                        std::size_t threads) {
+// Runs the points as `carom eos` runs them (gas/eos_sweep.hpp), shared among the job's processes,
+// with checkpoints in `folder` unless it is empty, the GIL released. Ctrl-C stops every point
+// within a few thousand events (the calling thread looks for it ten times a second) and raises
+// KeyboardInterrupt; an error in a point is raised once all have stopped. Only at rank 0 are the
+// outcomes returned.
+std::optional<std::vector<cli::GasOutcome>> run_points(const std::vector<cli::GasSpec>& specs,
+                                                       std::size_t threads,
+                                                       const cli::EnsembleJob& job,
+                                                       const std::string& folder) {
   std::atomic<bool> signalled{false};
-  cli::GasPointsOutcome run;
+  cli::EosSweepOutcome sweep;
   {
     const py::gil_scoped_release unlocked;
-    run = cli::run_gas_points(
-        specs, threads, [&signalled] { return signalled.load(); },
+    sweep = cli::run_sweep(
+        specs, threads, folder, [&signalled] { return signalled.load(); },
         [&signalled](double) {
           const py::gil_scoped_acquire locked;
           if (PyErr_CheckSignals() != 0) {
             PyErr_Clear();
             signalled.store(true);
           }
-        });
+        },
+        job);
   }
   if (signalled.load()) {
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();
   }
-  for (const std::exception_ptr& failure : run.failures) {
+  for (const std::string& failure : sweep.not_kept) {
+    const std::string warning = "a finished run was not kept: " + failure;
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
+      throw py::error_already_set();  // warnings made errors
+    }
+  }
+  if (!sweep.leads) return std::nullopt;
+  for (const std::exception_ptr& failure : sweep.runs.failures) {
     if (failure) std::rethrow_exception(failure);
   }
-  return std::move(run.outcomes);
+  return std::move(sweep.runs.outcomes);
+}
+
+// One run in this process alone, without checkpoints.
+cli::GasOutcome run_alone(const cli::GasSpec& spec) {
+  const cli::SingleProcessJob alone;
+  return std::move(run_points({spec}, 1, alone, {})->front());
 }
 
 cli::GasSpec gas_spec(const py::object& n, const py::object& eta, const py::object& equilibrate,
@@ -102,8 +123,7 @@ py::object gas(const py::object& n, const py::object& eta, const py::object& equ
                const py::object& collisions, const py::object& seed, const py::object& blocks,
                const py::object& mix, const std::string& start) {
   const cli::GasSpec spec = gas_spec(n, eta, equilibrate, collisions, seed, blocks, mix, start);
-  const std::vector<cli::GasOutcome> outcomes = run_points({spec}, 1);
-  return json_value(cli::gas_json(spec, outcomes.front()).dump());
+  return json_value(cli::gas_json(spec, run_alone(spec)).dump());
 }
 
 // An (x, y) curve as a pair of arrays.
@@ -125,10 +145,10 @@ GasMeasurement measure_gas(const py::object& n, const py::object& eta,
                            const py::object& seed, const py::object& blocks, const py::object& mix,
                            const std::string& start) {
   const cli::GasSpec spec = gas_spec(n, eta, equilibrate, collisions, seed, blocks, mix, start);
-  const std::vector<cli::GasOutcome> outcomes = run_points({spec}, 1);
-  const science::GasResults& r = outcomes.front().results;
+  const cli::GasOutcome outcome = run_alone(spec);
+  const science::GasResults& r = outcome.results;
   GasMeasurement m;
-  m.report = json_value(cli::gas_json(spec, outcomes.front()).dump());
+  m.report = json_value(cli::gas_json(spec, outcome).dump());
   m.rdf = curve_arrays(r.rdf);
   m.speed = curve_arrays(r.speed);
   m.psi6_local = curve_arrays(r.psi6_local);
@@ -153,7 +173,8 @@ GasMeasurement measure_gas(const py::object& n, const py::object& eta,
 py::object eos(const std::vector<py::object>& etas, const py::object& n,
                const py::object& equilibrate, const py::object& collisions, const py::object& seed,
                const py::object& blocks, const py::object& mix, const std::string& start,
-               const py::object& threads, const py::object& seeds) {
+               const py::object& threads, const py::object& seeds, const py::object& comm,
+               const py::object& checkpoints) {
   const cli::GasOptionText text =
       option_text(n, py::float_(0.0), equilibrate, collisions, seed, blocks, mix, start);
   std::vector<cli::GasSpec> specs;
@@ -169,7 +190,23 @@ py::object eos(const std::vector<py::object>& etas, const py::object& n,
   } catch (const cli::UsageError& error) {
     raise_usage(error);
   }
-  const std::vector<cli::GasOutcome> outcomes = run_points(specs, thread_count);
+  std::string folder;
+  if (!checkpoints.is_none()) {
+    folder = py::str(py::module_::import("os").attr("fspath")(checkpoints));
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) {
+      throw py::value_error("checkpoints = " + folder + ": cannot create it: " + error.message());
+    }
+  }
+  const cli::SingleProcessJob alone;
+  std::optional<CommJob> shared;
+  if (!comm.is_none()) shared.emplace(comm);
+  const std::optional<std::vector<cli::GasOutcome>> ran =
+      run_points(specs, thread_count, shared ? static_cast<const cli::EnsembleJob&>(*shared) : alone,
+                 folder);
+  if (!ran) return py::none();  // another rank than 0 of comm: rank 0 has the results
+  const std::vector<cli::GasOutcome>& outcomes = *ran;
   nlohmann::json points = nlohmann::json::array();
   for (std::size_t first = 0; first < specs.size(); first += seed_count) {
     if (seed_count == 1) {
@@ -269,11 +306,16 @@ void bind_science(py::module_& m) {
   m.def("eos", &eos, py::arg("etas"), py::kw_only(), py::arg("n") = 400,
         py::arg("equilibrate") = 50, py::arg("collisions") = 500, py::arg("seed") = 1,
         py::arg("blocks") = 16, py::arg("mix") = py::none(), py::arg("start") = "lattice",
-        py::arg("threads") = 2, py::arg("seeds") = 1,
+        py::arg("threads") = 2, py::arg("seeds") = 1, py::arg("comm") = py::none(),
+        py::arg("checkpoints") = py::none(),
         "The equation of state at each packing fraction in etas, `threads` runs at once, as "
         "`carom eos --json`: {\"points\": [one gas() dict per point]}; with seeds=K each point "
         "is K runs (seeds seed, seed + 1, ...) and its dict gives the mean, the block-average "
-        "error (_err) and the error between the seeds (_seed_err), each run's dict in \"runs\"");
+        "error (_err) and the error between the seeds (_seed_err), each run's dict in \"runs\". "
+        "comm (an mpi4py communicator): the runs shared among its ranks, the result at rank 0 "
+        "(None at the others), the same bit for bit. checkpoints (a folder every rank sees): "
+        "each run kept there as it ends, and one kept there before read instead of run again "
+        "(the files of `carom eos --out DIR` in DIR/points)");
 }
 
 }  // namespace carom::python

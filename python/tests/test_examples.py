@@ -67,6 +67,21 @@ def test_eos_curve_follows_henderson(tmp_path):
     assert z == pytest.approx(z_h, rel=0.03)
 
 
+@pytest.mark.skipif(not hasattr(carom, "eos"), reason="built without the tool")
+def test_eos_mpi_keeps_its_runs_and_reads_them_again(tmp_path):
+    out = run_example("eos_mpi.py", "--quick", "--out", str(tmp_path), cwd=tmp_path)
+    table = np.array(rows(out, 5), dtype=float)
+    eta, z, block_err, seed_err, ratio = table.T
+    assert eta.tolist() == [0.3, 0.5]
+    assert (z > 1).all() and (block_err > 0).all() and (seed_err > 0).all()
+    # Four seeds estimate the error between runs from 3 degrees of freedom: the ratio to the
+    # block error lies within [0.12, 2.2] 99 % of the time when both errors are honest.
+    assert ((ratio > 0.12) & (ratio < 2.2)).all(), out
+    assert len(list((tmp_path / "points").glob("*.json"))) == 8
+    # Started again, every run is read back: the same table to the last digit.
+    assert run_example("eos_mpi.py", "--quick", "--out", str(tmp_path), cwd=tmp_path) == out
+
+
 def test_billiards_break_contacts(tmp_path):
     out = run_example("billiards_break.py", "--until", "0.6", "--contacts", "12",
                       "--out", "pictures", cwd=tmp_path)

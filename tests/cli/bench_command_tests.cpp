@@ -50,6 +50,8 @@ TEST(BenchJson, IsOneObjectWithEveryFigure) {
                           "peak_rss_growth_bytes",
                           "energy_drift",
                           "momentum_drift",
+                          "audit",
+                          "audit_seconds",
                           "build_type",
                           "compiler",
                           "repetitions",
@@ -183,6 +185,22 @@ TEST(BenchText, SaysTheRateTheMemoryAndTheDrift) {
   EXPECT_THAT(run.out, Not(HasSubstr("timed runs")));
 }
 
+// Above 256 disks World::audit checks each disk's cell and its 3 x 3 block, as at 10^7.
+TEST(BenchAudit, AfterTheTimedRunsWhenAskedForAndNullOtherwise) {
+  const json audited = run_json({"bench", "--n", "400", "--eta", "0.6", "--collisions-per-ball",
+                                 "5", "--audit", "--json"});
+  EXPECT_EQ(audited["audit"], "clean");
+  EXPECT_GE(audited["audit_seconds"].get<double>(), 0.0);
+  EXPECT_EQ(audited["collisions"], 2000);
+  const json plain = run_json({"bench", "--n", "400", "--collisions-per-ball", "5", "--json"});
+  EXPECT_TRUE(plain["audit"].is_null());
+  const ToolRun text = run_carom({"bench", "--n", "400", "--collisions-per-ball", "2", "--audit"});
+  EXPECT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("audit after the timed runs: clean ("));
+  const ToolRun quiet = run_carom({"bench", "--n", "400", "--collisions-per-ball", "2"});
+  EXPECT_THAT(quiet.out, Not(HasSubstr("audit")));
+}
+
 TEST(BenchText, ListsRepeatedRuns) {
   const ToolRun run =
       run_carom({"bench", "--n", "100", "--collisions-per-ball", "3", "--repeat", "4"});
@@ -197,7 +215,8 @@ TEST(BenchHelp, NamesEveryOptionAndHowMemoryIsMeasured) {
   const ToolRun run = run_carom({"bench", "--help"});
   EXPECT_EQ(run.exit_code, 0);
   for (const char* option :
-       {"--n", "--eta", "--collisions-per-ball", "--equilibrate", "--seed", "--repeat", "--json"}) {
+       {"--n", "--eta", "--collisions-per-ball", "--equilibrate", "--seed", "--repeat", "--json",
+        "--audit"}) {
     EXPECT_THAT(run.out, HasSubstr(option)) << option;
   }
   EXPECT_THAT(run.out, HasSubstr("ru_maxrss"));

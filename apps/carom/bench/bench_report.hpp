@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct BenchOutcome {
   double energy_drift = 0.0;    // (E_after − E_before) / E_before over the timed run
   double momentum_drift = 0.0;  // |P_after − P_before| / √(2·M·E_before), M the total mass
   bool interrupted = false;     // stopped by a signal: the figures cover the runs up to there
+  // --audit: World::audit() after the timed runs, "" when it found nothing; nothing when not asked.
+  std::optional<std::string> audit;
+  double audit_seconds = 0.0;
   std::string build_type;       // of this binary: the figures mean little below Release
   std::string compiler;
   MachineInfo machine;

@@ -50,6 +50,7 @@ struct BenchOptions {
   std::string seed = "1";
   std::string repeat = "1";
   bool json = false;
+  bool audit = false;
 };
 
 struct BenchSettings {
@@ -58,6 +59,7 @@ struct BenchSettings {
   std::uint64_t equilibration_collisions = 0;
   std::uint64_t collisions = 0;  // in each timed run
   std::uint64_t repeats = 1;     // timed runs
+  bool audit = false;
 };
 
 // round(per_ball · n) collisions; per_ball must be a finite number >= minimum.
@@ -118,6 +120,7 @@ BenchSettings parse(const BenchOptions& options) {
   settings.equilibration_collisions =
       parse_collisions("--equilibrate", options.equilibrate, n, true);
   settings.seed = parse_whole_number({"--seed", options.seed, "a whole number >= 0"});
+  settings.audit = options.audit;
   const OptionValue repeat_value{"--repeat", options.repeat, "a whole number from 1 to 1000"};
   settings.repeats = parse_whole_number(repeat_value);
   if (settings.repeats < 1 || settings.repeats > kMaxRepeats) {
@@ -192,6 +195,11 @@ BenchOutcome measure(const BenchSettings& settings) {
   const double total_mass = static_cast<double>(outcome.n) * science::kDiskMass;
   outcome.momentum_drift =
       length(momentum_after - momentum_before) / std::sqrt(2.0 * total_mass * energy_before);
+  if (settings.audit) {
+    start = std::chrono::steady_clock::now();
+    outcome.audit = world.audit().value_or("");
+    outcome.audit_seconds = seconds_since(start);
+  }
   return outcome;
 }
 
@@ -219,6 +227,11 @@ int run(const BenchOptions& options) {
               << " timed collisions; the figures cover those\n";
     return StopOnSignals::exit_code();
   }
+  if (outcome.audit && !outcome.audit->empty()) {
+    std::cerr << "carom bench: error: the audit after the timed runs found: " << *outcome.audit
+              << '\n';
+    return kExitFailure;
+  }
   return kExitSuccess;
 }
 
@@ -245,11 +258,15 @@ Command add_bench_command(CLI::App& app) {
       "Contact recording is off (World::set_contact_recording(false)): the figure is the\n"
       "world's state, not a list of contacts that nothing reads.\n"
       "energy_drift: (E_after - E_before) / E_before over the timed run. momentum_drift:\n"
-      "|P_after - P_before| / sqrt(2*M*E_before), M the total mass.\n\n"
+      "|P_after - P_before| / sqrt(2*M*E_before), M the total mass.\n"
+      "audit (--audit): World::audit() after the timed runs, not timed with them: no two\n"
+      "disks overlapping, every disk in the grid cell the engine filed it in; \"clean\",\n"
+      "or the first violation (and exit status 1).\n\n"
       "Examples:\n"
       "  carom bench --n 10000 --eta 0.3 --collisions-per-ball 10\n"
       "  carom bench --n 100000 --eta 0.6 --collisions-per-ball 5 --seed 7 --json\n"
-      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5\n\n"
+      "  carom bench --n 1000000 --collisions-per-ball 2 --repeat 5\n"
+      "  carom bench --n 10000000 --collisions-per-ball 10 --audit --json\n\n"
       "The world's speed and memory goals are judged with this verb by the benchmark\n"
       "program carom_bench_goals (docs/performance.md).");
 
@@ -279,6 +296,9 @@ Command add_bench_command(CLI::App& app) {
       ->type_name("R")
       ->capture_default_str();
   bench->add_flag("--json", options->json, "Print one JSON object, numbers exact, not text");
+  bench->add_flag("--audit", options->audit,
+                  "Audit the world after the timed runs (no overlap, every ball in its cell); "
+                  "exit 1 if it finds anything");
 
   return {bench, [options] { return run(*options); }};
 }

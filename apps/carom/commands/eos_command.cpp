@@ -249,9 +249,11 @@ int run(const EosOptions& options) {
   const StopOnSignals stop_on_signals;
   EosSweepOutcome sweep;
   {
-    ProgressBar bar(MpiJob::get().is_root());
-    sweep = run_sweep(runs, threads, points_folder, &StopOnSignals::requested,
-                      [&bar](double fraction) { bar.update(fraction, ""); });
+    const MpiJob& job = MpiJob::get();
+    ProgressBar bar(job.is_root());
+    GasPointsWatch watch;
+    if (job.is_root()) watch = [&bar](double fraction) { bar.update(fraction, ""); };
+    sweep = run_sweep(runs, threads, points_folder, &StopOnSignals::requested, watch, job);
   }
   // Under MPI, rank 0 alone reports and writes; the other ranks are done.
   if (!sweep.leads) return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "gas/gas_record.hpp"
-#include "system/mpi_job.hpp"
 
 namespace carom::cli {
 namespace eos_sweep_parts {
@@ -31,8 +30,7 @@ nlohmann::json run_message(std::size_t index, const GasPointsOutcome& ran, std::
 
 EosSweepOutcome run_sweep(const std::vector<GasSpec>& specs, std::size_t threads,
                           const std::string& points_folder, const GasStopAsked& stop,
-                          const GasPointsWatch& watch) {
-  const MpiJob& job = MpiJob::get();
+                          const GasPointsWatch& watch, const EnsembleJob& job) {
   const auto file_of = [&points_folder](const GasSpec& spec) {
     return (std::filesystem::path(points_folder) / point_file_name(spec)).string();
   };
@@ -80,7 +78,7 @@ EosSweepOutcome run_sweep(const std::vector<GasSpec>& specs, std::size_t threads
     };
   }
   GasPointsOutcome ran =
-      run_gas_points(mine, threads, stop, job.is_root() ? watch : GasPointsWatch{}, keep);
+      run_gas_points(mine, threads, stop, watch, keep);
   all.stopped = ran.stopped;
   if (job.size() == 1) {
     for (std::size_t j = 0; j < mine.size(); ++j) {

@@ -4,7 +4,8 @@
 // sweep stopped by a signal, or killed, goes on from where it was when started again with the
 // same options and folder, and gives the same numbers as one never stopped.
 //
-// Under MPI (system/mpi_job.hpp) rank 0 reads the checkpoints and hands out the runs still to
+// Shared among processes (system/ensemble_job.hpp: the ranks of an MPI job, or of an mpi4py
+// communicator from Python) rank 0 reads the checkpoints and hands out the runs still to
 // make, every size-th to each rank, which runs its share on its own threads and keeps each run's
 // checkpoint as it ends (the folder must be one every rank sees: a shared file system). The
 // runs' numbers are then gathered at rank 0 exactly (gas_record.hpp), which alone writes the
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "gas/gas_points.hpp"
+#include "system/ensemble_job.hpp"
 
 namespace carom::cli {
 
@@ -26,10 +28,11 @@ struct EosSweepOutcome {
   std::vector<std::string> not_kept{};  // checkpoint files that could not be written, and why
 };
 
-// Runs the specs on `threads` threads (gas_points.hpp) on each rank; points_folder empty: no
-// checkpoints. Only where `leads` are the runs filled in. `watch` is told on rank 0 only.
+// Runs the specs shared among the job's processes, on `threads` threads in each (gas_points.hpp);
+// points_folder empty: no checkpoints. Only where `leads` are the runs filled in. `watch` is told
+// of this process's progress (the tool gives one to rank 0 only, for its progress bar).
 [[nodiscard]] EosSweepOutcome run_sweep(const std::vector<GasSpec>& specs, std::size_t threads,
                                         const std::string& points_folder, const GasStopAsked& stop,
-                                        const GasPointsWatch& watch);
+                                        const GasPointsWatch& watch, const EnsembleJob& job);
 
 }  // namespace carom::cli

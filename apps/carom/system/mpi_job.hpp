@@ -7,22 +7,21 @@
 #include <string>
 #include <vector>
 
+#include "system/ensemble_job.hpp"
+
 namespace carom::cli {
 
-class MpiJob {
+class MpiJob final : public EnsembleJob {
  public:
   // The job, joined on the first call (from the main thread).
   [[nodiscard]] static const MpiJob& get();
 
-  [[nodiscard]] int rank() const noexcept { return rank_; }
-  [[nodiscard]] int size() const noexcept { return size_; }
-  [[nodiscard]] bool is_root() const noexcept { return rank_ == 0; }
+  [[nodiscard]] int rank() const override { return rank_; }
+  [[nodiscard]] int size() const override { return size_; }
 
-  // Collective (every rank calls it, from the main thread): at rank 0 every rank's text in rank
-  // order, at the others nothing.
-  [[nodiscard]] std::vector<std::string> gather(const std::string& mine) const;
-  // Collective: rank 0's text at every rank.
-  [[nodiscard]] std::string broadcast(const std::string& from_root) const;
+  // Collective over MPI_COMM_WORLD, from the main thread only.
+  [[nodiscard]] std::vector<std::string> gather(const std::string& mine) const override;
+  [[nodiscard]] std::string broadcast(const std::string& from_root) const override;
 
  private:
   MpiJob();

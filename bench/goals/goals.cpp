@@ -11,7 +11,7 @@ namespace carom::goals {
 
 namespace {
 
-// The goals' sizes and limits (docs/performance.md, "The hard-disk gas on each host"; their
+// The goals' sizes and limits (docs/performance.md, "The hard-disk gas by size"; their
 // status: docs/decisions/0034-speed-goals-blocked.md).
 constexpr std::uint64_t kSmall = 10'000;
 constexpr std::uint64_t kMedium = 100'000;

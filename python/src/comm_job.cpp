@@ -11,15 +11,15 @@ namespace carom::python {
 CommJob::CommJob(py::object comm) : comm_(std::move(comm)) {
   for (const char* method : {"Get_rank", "Get_size", "bcast", "gather"}) {
     if (!py::hasattr(comm_, method)) {
-      throw py::type_error(std::string("comm must be an mpi4py communicator (it has no ") +
-                           method + "())");
+      throw py::type_error(std::string("comm must be an mpi4py communicator (it has no ") + method +
+                           "())");
     }
   }
   rank_ = comm_.attr("Get_rank")().cast<int>();
   size_ = comm_.attr("Get_size")().cast<int>();
   if (size_ < 1 || rank_ < 0 || rank_ >= size_) {
-    throw py::value_error("comm: rank " + std::to_string(rank_) + " of " +
-                          std::to_string(size_) + " processes");
+    throw py::value_error("comm: rank " + std::to_string(rank_) + " of " + std::to_string(size_) +
+                          " processes");
   }
 }
 

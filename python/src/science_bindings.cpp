@@ -202,9 +202,8 @@ py::object eos(const std::vector<py::object>& etas, const py::object& n,
   const cli::SingleProcessJob alone;
   std::optional<CommJob> shared;
   if (!comm.is_none()) shared.emplace(comm);
-  const std::optional<std::vector<cli::GasOutcome>> ran =
-      run_points(specs, thread_count, shared ? static_cast<const cli::EnsembleJob&>(*shared) : alone,
-                 folder);
+  const std::optional<std::vector<cli::GasOutcome>> ran = run_points(
+      specs, thread_count, shared ? static_cast<const cli::EnsembleJob&>(*shared) : alone, folder);
   if (!ran) return py::none();  // another rank than 0 of comm: rank 0 has the results
   const std::vector<cli::GasOutcome>& outcomes = *ran;
   nlohmann::json points = nlohmann::json::array();

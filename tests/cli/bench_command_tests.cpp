@@ -187,8 +187,8 @@ TEST(BenchText, SaysTheRateTheMemoryAndTheDrift) {
 
 // Above 256 disks World::audit checks each disk's cell and its 3 x 3 block, as at 10^7.
 TEST(BenchAudit, AfterTheTimedRunsWhenAskedForAndNullOtherwise) {
-  const json audited = run_json({"bench", "--n", "400", "--eta", "0.6", "--collisions-per-ball",
-                                 "5", "--audit", "--json"});
+  const json audited = run_json(
+      {"bench", "--n", "400", "--eta", "0.6", "--collisions-per-ball", "5", "--audit", "--json"});
   EXPECT_EQ(audited["audit"], "clean");
   EXPECT_GE(audited["audit_seconds"].get<double>(), 0.0);
   EXPECT_EQ(audited["collisions"], 2000);
@@ -214,9 +214,8 @@ TEST(BenchText, ListsRepeatedRuns) {
 TEST(BenchHelp, NamesEveryOptionAndHowMemoryIsMeasured) {
   const ToolRun run = run_carom({"bench", "--help"});
   EXPECT_EQ(run.exit_code, 0);
-  for (const char* option :
-       {"--n", "--eta", "--collisions-per-ball", "--equilibrate", "--seed", "--repeat", "--json",
-        "--audit"}) {
+  for (const char* option : {"--n", "--eta", "--collisions-per-ball", "--equilibrate", "--seed",
+                             "--repeat", "--json", "--audit"}) {
     EXPECT_THAT(run.out, HasSubstr(option)) << option;
   }
   EXPECT_THAT(run.out, HasSubstr("ru_maxrss"));

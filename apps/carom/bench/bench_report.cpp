@@ -91,9 +91,9 @@ std::string bench_text(const BenchOutcome& o) {
                      o.repetitions.size() > 1 ? "s" : "", rounded(o.energy_drift),
                      rounded(o.momentum_drift));
   if (o.audit) {
-    out += o.audit->empty()
-               ? fmt::format("  audit after the timed runs: clean ({} s)\n", rounded(o.audit_seconds))
-               : fmt::format("  audit after the timed runs: {}\n", *o.audit);
+    out += o.audit->empty() ? fmt::format("  audit after the timed runs: clean ({} s)\n",
+                                          rounded(o.audit_seconds))
+                            : fmt::format("  audit after the timed runs: {}\n", *o.audit);
   }
   out += build_and_machine_text(o.build_type, o.compiler, o.machine);
   return out;
@@ -124,7 +124,7 @@ nlohmann::ordered_json bench_json(const BenchOutcome& o) {
   out["energy_drift"] = o.energy_drift;
   out["momentum_drift"] = o.momentum_drift;
   // null when not asked for, "clean", or the first violation World::audit() found.
-  out["audit"] = !o.audit          ? nlohmann::ordered_json()
+  out["audit"] = !o.audit           ? nlohmann::ordered_json()
                  : o.audit->empty() ? nlohmann::ordered_json("clean")
                                     : nlohmann::ordered_json(*o.audit);
   out["audit_seconds"] = o.audit_seconds;

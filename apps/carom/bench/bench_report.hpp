@@ -35,7 +35,7 @@ struct BenchOutcome {
   // --audit: World::audit() after the timed runs, "" when it found nothing; nothing when not asked.
   std::optional<std::string> audit;
   double audit_seconds = 0.0;
-  std::string build_type;       // of this binary: the figures mean little below Release
+  std::string build_type;  // of this binary: the figures mean little below Release
   std::string compiler;
   MachineInfo machine;
 

@@ -77,8 +77,7 @@ EosSweepOutcome run_sweep(const std::vector<GasSpec>& specs, std::size_t threads
       }
     };
   }
-  GasPointsOutcome ran =
-      run_gas_points(mine, threads, stop, watch, keep);
+  GasPointsOutcome ran = run_gas_points(mine, threads, stop, watch, keep);
   all.stopped = ran.stopped;
   if (job.size() == 1) {
     for (std::size_t j = 0; j < mine.size(); ++j) {

@@ -20,6 +20,7 @@
 #include "gas/gas_session.hpp"
 #include "gas/seed_ensemble.hpp"
 #include "options/usage_error.hpp"
+#include "pack/pack_ensemble.hpp"
 #include "pack/pack_session.hpp"
 
 namespace carom::python {
@@ -219,12 +220,66 @@ py::object eos(const std::vector<py::object>& etas, const py::object& n,
   return json_value(nlohmann::json{{"points", points}}.dump());
 }
 
+// Packings from consecutive seeds as `carom pack --seeds K --json` makes them (pack_ensemble.hpp),
+// shared among comm's ranks (None at the others) and kept in `out`. Ctrl-C raises
+// KeyboardInterrupt once every compression has stopped.
+py::object pack_ensemble(const cli::PackOptions& o, std::uint64_t seeds, const py::object& comm,
+                         const py::object& out) {
+  (void)cli::parse_pack_options(o);
+  const std::uint64_t threads = cli::parse_eos_threads(o.threads);
+  std::string folder;
+  if (!out.is_none()) {
+    folder = py::str(py::module_::import("os").attr("fspath")(out));
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(folder) / "runs", error);
+    if (error) throw py::value_error("out = " + folder + ": cannot create it: " + error.message());
+  }
+  const cli::SingleProcessJob alone;
+  std::optional<CommJob> shared;
+  if (!comm.is_none()) shared.emplace(comm);
+  std::atomic<bool> signalled{false};
+  cli::PackEnsembleOutcome ensemble;
+  {
+    const py::gil_scoped_release unlocked;
+    ensemble = cli::run_pack_ensemble(
+        o, seeds, threads, folder, [&signalled] { return signalled.load(); },
+        [&signalled](double) {
+          const py::gil_scoped_acquire locked;
+          if (PyErr_CheckSignals() != 0) {
+            PyErr_Clear();
+            signalled.store(true);
+          }
+        },
+        shared ? static_cast<const cli::EnsembleJob&>(*shared) : alone);
+  }
+  if (signalled.load()) {
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+  for (const std::string& failure : ensemble.not_kept) {
+    const std::string warning = "a packing was not kept: " + failure;
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
+      throw py::error_already_set();
+    }
+  }
+  if (!ensemble.leads) return py::none();
+  for (const cli::PackRun& run : ensemble.runs) {
+    if (!run.failure.empty()) {
+      throw std::runtime_error("the packing of seed " + std::to_string(run.seed) +
+                               " failed: " + run.failure);
+    }
+  }
+  return json_value(cli::pack_ensemble_json(ensemble.runs).dump());
+}
+
 // A packing made as `carom pack --json` makes it. Ctrl-C stops it at the next window (the
-// report then says end = "interrupted").
+// report then says end = "interrupted"). With seeds, comm or out: the ensemble's dict.
 py::object pack(const py::object& n, const py::object& mix, const std::string& boundary,
                 const py::object& aspect, const py::object& rate, const py::object& eta,
                 const py::object& start_eta, const py::object& pressure_limit,
-                const py::object& contact_tolerance, const py::object& seed) {
+                const py::object& contact_tolerance, const py::object& seed,
+                const py::object& seeds, const py::object& threads, const py::object& comm,
+                const py::object& out) {
   cli::PackOptions o;
   o.n = py::str(n);
   if (py::isinstance<py::str>(mix)) {
@@ -243,8 +298,14 @@ py::object pack(const py::object& n, const py::object& mix, const std::string& b
   o.pressure_limit = py::str(pressure_limit);
   if (!contact_tolerance.is_none()) o.tolerance = py::str(contact_tolerance);
   o.seed = py::str(seed);
+  o.seeds = py::str(seeds);
+  o.threads = py::str(threads);
   std::string json;
   try {
+    const std::uint64_t seed_count = cli::parse_seed_count(o.seeds);
+    if (seed_count > 1 || !comm.is_none() || !out.is_none()) {
+      return pack_ensemble(o, seed_count, comm, out);
+    }
     const cli::PackRequest r = cli::parse_pack_options(o);
     bool signalled = false;
     {
@@ -277,8 +338,14 @@ void bind_science(py::module_& m) {
   m.def("pack", &pack, py::kw_only(), py::arg("n") = 1000, py::arg("mix") = py::none(),
         py::arg("boundary") = "periodic", py::arg("aspect") = 1.0, py::arg("rate") = 0.002,
         py::arg("eta") = py::none(), py::arg("start_eta") = 0.3, py::arg("pressure_limit") = 1e12,
-        py::arg("contact_tolerance") = py::none(), py::arg("seed") = 1,
-        "A packing as `carom pack --json` makes it (eta None: until jammed): the same dict");
+        py::arg("contact_tolerance") = py::none(), py::arg("seed") = 1, py::arg("seeds") = 1,
+        py::arg("threads") = 2, py::arg("comm") = py::none(), py::arg("out") = py::none(),
+        "A packing as `carom pack --json` makes it (eta None: until jammed): the same dict. "
+        "seeds=K: K packings from seeds seed, seed + 1, ..., `threads` at once, as `carom pack "
+        "--seeds K --json` reports them (the means, their _seed_err, each report in \"runs\"); "
+        "comm (an mpi4py communicator): shared among its ranks, the dict at rank 0 and None at "
+        "the others; out (a folder): each packing written there as it ends (seed-S.json) with "
+        "its report (runs/), which a new start reads instead of compressing again");
   py::class_<GasMeasurement>(m, "GasMeasurement",
                              "What carom.gas reports (report, the same dict), with the "
                              "distributions as (x, y) arrays and the last configuration measured")

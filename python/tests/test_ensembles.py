@@ -175,3 +175,41 @@ def test_mpi4py_ranks_under_mpirun_give_the_same_points(tmp_path):
                           capture_output=True, text=True, env=env, timeout=120)
     assert done.returncode == 0, done.stderr
     same_points(json.loads(done.stdout), carom.eos(ETAS, seeds=2, **GAS))
+
+
+JAMMING = dict(n=120, mix=(1.4, 0.5), rate=0.01, pressure_limit=1e8)
+
+
+def same_packings(a, b):
+    timings = {"wall_seconds", "collisions_per_second"}
+    assert {k: v for k, v in a.items() if k != "runs"} == {k: v for k, v in b.items() if k != "runs"}
+    for x, y in zip(a["runs"], b["runs"], strict=True):
+        assert {k: v for k, v in x.items() if k not in timings} == \
+               {k: v for k, v in y.items() if k not in timings}
+
+
+def test_pack_seeds_is_the_tools_and_each_run_that_seeds_packing():
+    ours = carom.pack(seeds=3, seed=2, **JAMMING)
+    done = subprocess.run([tool(), "pack", "--n=120", "--mix=1.4:0.5", "--rate=0.01",
+                           "--until-jammed", "--pressure-limit=1e8", "--seed=2", "--seeds=3",
+                           "-q", "--json"], capture_output=True, text=True, check=True)
+    same_packings(ours, json.loads(done.stdout))
+    assert ours["seeds"] == 3 and ours["first_seed"] == 2 and ours["completed"] == 3
+    alone = carom.pack(seed=3, **JAMMING)
+    assert ours["runs"][1]["eta"] == alone["eta"] and ours["runs"][1]["Z"] == alone["Z"]
+    with pytest.raises(ValueError, match="^seeds = 0"):
+        carom.pack(seeds=0, **JAMMING)
+
+
+def test_pack_seeds_shared_among_ranks_and_kept(tmp_path):
+    alone = carom.pack(seeds=4, **JAMMING)
+    results, shared = as_ranks(3, lambda comm: carom.pack(seeds=4, threads=1, comm=comm,
+                                                          out=tmp_path / "jams", **JAMMING))
+    assert results[1] is None and results[2] is None
+    same_packings(results[0], alone)
+    assert [len(json.loads(m)) for m in shared["gathered"]] == [2, 1, 1]
+    assert sorted(p.name for p in (tmp_path / "jams").glob("seed-*.json")) == \
+        [f"seed-{s}.json" for s in range(1, 5)]
+    # Started again: every packing read, the reports (timings and all) the same.
+    again = carom.pack(seeds=4, out=tmp_path / "jams", **JAMMING)
+    assert again == results[0]

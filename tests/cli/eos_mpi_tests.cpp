@@ -22,22 +22,6 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-#define CAROM_SKIP_WITHOUT_MPI()                                                          \
-  do {                                                                                    \
-    if (!CAROM_CLI_HAS_MPI) GTEST_SKIP() << "the tool was built without MPI (CAROM_MPI)"; \
-    if (std::string(CAROM_MPIRUN).empty() || !std::filesystem::exists(CAROM_MPIRUN)) {    \
-      GTEST_SKIP() << "mpirun is missing: sudo apt-get install -y openmpi-bin";           \
-    }                                                                                     \
-  } while (false)
-
-// mpirun with 3 ranks on this machine whatever its cores (--oversubscribe), as root too (CI).
-std::vector<std::string> mpirun_args(const std::vector<std::string>& carom_args) {
-  std::vector<std::string> args{"--oversubscribe", "--allow-run-as-root", "-n", "3",
-                                CAROM_CLI_PATH};
-  args.insert(args.end(), carom_args.begin(), carom_args.end());
-  return args;
-}
-
 std::vector<std::string> ranked_sweep(const std::filesystem::path& out, bool as_json = true) {
   std::vector<std::string> args{
       "eos",     "--eta", "0.1:0.5:0.1", "--n", "64",    "--equilibrate", "5", "--collisions", "40",

@@ -204,4 +204,11 @@ std::size_t json_files_in(const std::filesystem::path& folder) {
   return count;
 }
 
+std::vector<std::string> mpirun_args(const std::vector<std::string>& carom_args) {
+  std::vector<std::string> args{"--oversubscribe", "--allow-run-as-root", "-n", "3",
+                                CAROM_CLI_PATH};
+  args.insert(args.end(), carom_args.begin(), carom_args.end());
+  return args;
+}
+
 }  // namespace carom::cli::test

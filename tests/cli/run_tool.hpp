@@ -34,6 +34,19 @@ struct ToolRun {
 // Waits for a tool started so: its exit status, or -1 if it did not exit normally.
 [[nodiscard]] int wait_for_exit(pid_t child);
 
+// Skips the test, saying why, where the tool was built without MPI or mpirun is missing.
+#define CAROM_SKIP_WITHOUT_MPI()                                                          \
+  do {                                                                                    \
+    if (!CAROM_CLI_HAS_MPI) GTEST_SKIP() << "the tool was built without MPI (CAROM_MPI)"; \
+    if (std::string(CAROM_MPIRUN).empty() || !std::filesystem::exists(CAROM_MPIRUN)) {    \
+      GTEST_SKIP() << "mpirun is missing: sudo apt-get install -y openmpi-bin";           \
+    }                                                                                     \
+  } while (false)
+
+// mpirun's arguments for the tool with 3 ranks on this machine whatever its cores
+// (--oversubscribe), as root too (CI).
+[[nodiscard]] std::vector<std::string> mpirun_args(const std::vector<std::string>& carom_args);
+
 // The tool started in the background with its output kept, for tests that signal it. Killed
 // (SIGKILL) when destroyed if it is still running.
 class RunningTool {

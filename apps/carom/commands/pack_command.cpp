@@ -2,19 +2,26 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <system_error>
 
 #include "carom/science/contact_network.hpp"
 #include "carom/science/packing.hpp"
+#include "gas/gas_points.hpp"
+#include "gas/seed_ensemble.hpp"
 #include "options/exit_codes.hpp"
 #include "options/readable_number.hpp"
 #include "options/usage_error.hpp"
+#include "pack/pack_ensemble.hpp"
 #include "pack/pack_session.hpp"
 #include "pack/packed_scene.hpp"
+#include "system/mpi_job.hpp"
 #include "system/output_file.hpp"
 #include "system/progress_bar.hpp"
 #include "system/stop_signals.hpp"
@@ -22,7 +29,72 @@
 namespace carom::cli {
 namespace {
 
+// `carom pack --seeds K` (pack/pack_ensemble.hpp): --out names a folder of packings.
+int run_ensemble(const PackOptions& o, std::uint64_t seeds) {
+  (void)parse_pack_options(o);  // every option checked before anything is written
+  const std::uint64_t threads = parse_eos_threads(o.threads);
+  if (!o.picture.empty()) {
+    throw UsageError("--picture", o.picture,
+                     "draws one packing; with --seeds, --out writes each seed's scene, which "
+                     "carom render draws");
+  }
+  if (o.out == kStandardOutput) {
+    throw UsageError("--out", o.out, "with --seeds, --out names a folder for the packings");
+  }
+  if (!o.out.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(o.out) / "runs", error);
+    if (error) {
+      std::cerr << "carom pack: error: --out \"" << o.out
+                << "\": cannot create it: " << error.message() << '\n';
+      return kExitUsage;
+    }
+  }
+  const StopOnSignals stop_on_signals;
+  const MpiJob& job = MpiJob::get();
+  PackEnsembleOutcome ensemble;
+  {
+    ProgressBar bar(!o.quiet && job.is_root());
+    std::function<void(double)> watch;
+    if (job.is_root()) watch = [&bar](double fraction) { bar.update(fraction, ""); };
+    ensemble = run_pack_ensemble(o, seeds, threads, o.out, &StopOnSignals::requested, watch, job);
+  }
+  // Under MPI, rank 0 alone reports; the other ranks are done.
+  if (!ensemble.leads) {
+    return StopOnSignals::requested() ? StopOnSignals::exit_code() : kExitSuccess;
+  }
+  if (ensemble.read > 0) {
+    std::cerr << "carom pack: " << ensemble.read << " of " << seeds << " packings read from "
+              << (std::filesystem::path(o.out) / "runs").string()
+              << ", where an earlier run kept them\n";
+  }
+  for (const std::string& failure : ensemble.not_kept) {
+    std::cerr << "carom pack: warning: a packing was not kept: " << failure << '\n';
+  }
+  bool failed = false;
+  for (const PackRun& run : ensemble.runs) {
+    if (run.failure.empty()) continue;
+    failed = true;
+    std::cerr << "carom pack: error: the packing of seed " << run.seed << " failed: " << run.failure
+              << '\n';
+  }
+  if (o.json) {
+    std::cout << pack_ensemble_json(ensemble.runs).dump() << '\n';
+  } else {
+    std::cout << pack_ensemble_text(ensemble.runs);
+  }
+  if (StopOnSignals::requested()) {
+    std::cerr << "carom pack: " << StopOnSignals::what()
+              << "; the report holds the packings completed"
+              << (o.out.empty() ? "" : ", kept in --out; the same command makes the rest") << '\n';
+    return StopOnSignals::exit_code();
+  }
+  return failed ? kExitFailure : kExitSuccess;
+}
+
 int run(const PackOptions& o) {
+  const std::uint64_t seeds = parse_seed_count(o.seeds);
+  if (seeds > 1) return run_ensemble(o, seeds);
   const PackRequest r = parse_pack_options(o);
   for (const auto& [option, name] : {std::pair{"--out", &o.out}, {"--picture", &o.picture}}) {
     if (name->empty()) continue;
@@ -103,8 +175,15 @@ Command add_pack_command(CLI::App& app) {
       "Slow compression (G = 1e-4) lets equal disks crystallise; fast (G = 1e-2) jams them;\n"
       "at G above about 3e-3 the pressure can run away before every contact has formed\n"
       "(Z below 4): docs/science.md, \"Compression and jamming\".\n\n"
+      "--seeds K makes K packings alike from seeds S, S+1, ... on --threads threads (and\n"
+      "across the ranks of `mpirun -n R carom pack ...`), each reported with the means of\n"
+      "the packing fraction, Z, the rattlers' fraction, psi6 and the pressure and the\n"
+      "standard error between the seeds. With --out DIR each packing is written as it ends\n"
+      "(DIR/seed-S.json) with its report (DIR/runs/seed-S.json); started again with the\n"
+      "same options, the seeds kept there are read, not compressed again (docs/ensembles.md).\n\n"
       "Examples:\n"
       "  carom pack --n 1000 --mix 1.4:0.5 --until-jammed --json\n"
+      "  carom pack --n 1000 --mix 1.4:0.5 --until-jammed --seeds 16 --threads 2 --out jams\n"
       "  carom pack --n 396 --aspect 1.0585 --rate 3e-4 --eta 0.88 --out crystal.json "
       "--picture crystal.png");
   auto o = std::make_shared<PackOptions>();
@@ -143,7 +222,17 @@ Command add_pack_command(CLI::App& app) {
   pack->add_option("--seed", o->seed, "Seed of the placement and the velocities")
       ->type_name("S")
       ->capture_default_str();
-  pack->add_option("-o,--out", o->out, "Write the packing as a scene (JSON), for carom run")
+  pack->add_option("--seeds", o->seeds,
+                   "Make K packings, from seeds S, S+1, ...: each one's figures, and their means "
+                   "with the error between the seeds")
+      ->type_name("K")
+      ->capture_default_str();
+  pack->add_option("--threads", o->threads, "With --seeds: packings made at once, 1 to 256")
+      ->type_name("T")
+      ->capture_default_str();
+  pack->add_option("-o,--out", o->out,
+                   "Write the packing as a scene (JSON), for carom run; with --seeds, a folder: "
+                   "seed-S.json a packing, runs/ the reports a new start reads")
       ->type_name("FILE");
   pack->add_option("--picture", o->picture,
                    "Write a picture (.png or .svg), disks coloured by their contacts")

@@ -55,18 +55,11 @@ EosSweepOutcome run_sweep(const std::vector<GasSpec>& specs, std::size_t threads
       }
     }
   }
-  if (job.size() > 1) {
-    to_make = nlohmann::json::parse(job.broadcast(nlohmann::json(to_make).dump()))
-                  .get<std::vector<std::size_t>>();
-  }
-  // This rank's share: every size-th run to make, from its rank on.
+  // This rank's share of them.
+  const std::vector<std::size_t> index_of = share_of_runs(job, to_make);
   std::vector<GasSpec> mine;
-  std::vector<std::size_t> index_of;
-  const auto ranks = static_cast<std::size_t>(job.size());
-  for (std::size_t j = static_cast<std::size_t>(job.rank()); j < to_make.size(); j += ranks) {
-    mine.push_back(specs[to_make[j]]);
-    index_of.push_back(to_make[j]);
-  }
+  mine.reserve(index_of.size());
+  for (const std::size_t i : index_of) mine.push_back(specs[i]);
   std::mutex not_kept;
   GasPointDone keep;
   if (!points_folder.empty()) {

@@ -26,6 +26,8 @@ struct PackOptions {
   std::string pressure_limit = "1e12";
   std::string tolerance;  // empty: from the pressure reached
   std::string seed = "1";
+  std::string seeds = "1";    // packings from consecutive seeds (pack/pack_ensemble.hpp)
+  std::string threads = "2";  // of them at once in each process
   std::string out;
   std::string picture;
   bool json = false;

@@ -3,6 +3,7 @@
 // this process alone. The Python module wraps an mpi4py communicator in one of its own.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,11 @@ class SingleProcessJob final : public EnsembleJob {
     return from_root;
   }
 };
+
+// Collective: the runs still to make, as rank 0 lists them (`to_make` is read at rank 0 only),
+// shared out: this process's share, every size-th of them from its rank on, so that the runs of
+// one point or seed range go to different processes.
+[[nodiscard]] std::vector<std::size_t> share_of_runs(const EnsembleJob& job,
+                                                     const std::vector<std::size_t>& to_make);
 
 }  // namespace carom::cli

@@ -24,8 +24,11 @@ CommJob::CommJob(py::object comm) : comm_(std::move(comm)) {
 }
 
 CommJob::~CommJob() {
-  const py::gil_scoped_acquire locked;
-  comm_ = py::object();
+  try {
+    const py::gil_scoped_acquire locked;
+    comm_ = py::object();
+  } catch (...) {  // NOLINT(bugprone-empty-catch): the interpreter is going; nothing to release
+  }
 }
 
 std::vector<std::string> CommJob::gather(const std::string& mine) const {

@@ -22,7 +22,8 @@
 
 namespace carom::cli {
 
-struct PackRun {
+// (nlohmann::json's move is noexcept; the check sees the assertions of its invariant inside.)
+struct PackRun {  // NOLINT(bugprone-exception-escape)
   std::uint64_t seed = 0;
   nlohmann::json report;  // pack_json's, once the packing ended (completed)
   std::string failure;    // its error, where it failed

@@ -38,7 +38,7 @@ RUN_ANIMATION := $(RUN_DIR)/billiards-break.gif
 CAROM := build/release/apps/carom/carom
 # The scene loader's libFuzzer target: a bounded run in make test, a longer one in make fuzz.
 FUZZER := build/fuzz/tests/fuzz/carom_scene_fuzz
-FUZZ_SMOKE_SECONDS ?= 20
+FUZZ_SMOKE_SECONDS ?= 10
 
 .PHONY: all deps run-deps run test test-long test-dev test-clang test-asan format-check bench format
 .PHONY: lint clean
@@ -115,22 +115,24 @@ run: run-deps
 TEST_WEB := $(if $(wildcard /usr/bin/chromium),test-web)
 
 # Each compiler builds everything once: g++ in test-dev (the suite at full speed, benchmarks'
-# smoke runs included), clang++ in test-clang-asan (the suite again under ASan + UBSan). Timings
+# smoke runs included), clang++ in test-clang-asan (the suite again under ASan + UBSan; the
+# kernels optimised in test-clang-kernels, beside the browser tests). Timings
 # and reasoning: docs/design.md, "CI time".
 test: deps test-dev test-clang-asan format-check checks-beside-web
 	echo "make test: all checks passed"
 
-# The browser tests beside the rest: they keep about half a core busy (two files at a time,
-# mostly waiting on pages, which they wait for by what a page shows, never by a fixed time), so
-# clang-tidy and then the fuzzers' bounded runs take what is left, and the ThreadSanitizer test
-# follows the browser tests (docs/design.md, "CI time"). Each side's output is shown whole when it
-# ends.
+# Two lanes side by side, each keeping a core busy: clang-tidy, the optimised clang kernels and
+# the fuzzers' bounded runs in one; the browser tests (which wait for what a page shows, never for
+# a fixed time, so that a loaded machine slows them without failing them) and the
+# ThreadSanitizer test in the other (docs/design.md, "CI time"). Each lane's output is shown whole
+# when it ends.
 .PHONY: checks-beside-web lint-then-fuzz web-then-tsan
 checks-beside-web:
 	$(MAKE) --no-print-directory -j2 --output-sync=target lint-then-fuzz web-then-tsan
 
 lint-then-fuzz:
 	$(MAKE) --no-print-directory lint
+	$(MAKE) --no-print-directory test-clang-kernels
 	$(MAKE) --no-print-directory fuzz-smoke
 
 web-then-tsan:
@@ -157,14 +159,17 @@ test-asan:
 # left to test-dev (g++ -Werror, their smoke runs) and make test-clang: under the sanitizers they
 # cost a fifth of the stage and test nothing the library's suite does not (decision 0039).
 .PHONY: test-clang-asan
-# Sanitizers keep clang from vectorising, so the libraries and the kernels' tests are also built
-# optimised (preset clang): there -Wpass-failed checks that the batch kernels' vectorisation
-# pragmas hold, and the tests check the vectorised batch (core) and the pair kernel (world)
-# against the scalar query bit for bit.
 test-clang-asan:
 	cmake --preset clang-asan
 	cmake --build --preset clang-asan
 	ctest --preset clang-asan
+
+# Sanitizers keep clang from vectorising, so the libraries and the kernels' tests are also built
+# optimised (preset clang): there -Wpass-failed checks that the batch kernels' vectorisation
+# pragmas hold, and the tests check the vectorised batch (core) and the pair kernel (world)
+# against the scalar query bit for bit.
+.PHONY: test-clang-kernels
+test-clang-kernels:
 	cmake --preset clang >/dev/null
 	cmake --build --preset clang --target carom_core_tests carom_world_kernel_tests
 	build/clang/tests/carom_core_tests --gtest_brief=1
@@ -187,7 +192,7 @@ FUZZ_SECONDS ?= 600
 # time. make fuzz and the fuzz-* targets explore with a new seed each run; what they find goes
 # into the committed corpus with a test (docs/guarantees.md, section 11).
 FUZZ_SMOKE_SEED ?= 1
-TOI_FUZZ_SMOKE_SECONDS ?= 20
+TOI_FUZZ_SMOKE_SECONDS ?= 10
 TOI_FUZZ := build/fuzz/tests/fuzz/carom_toi_fuzz
 .PHONY: fuzz-smoke fuzz fuzz-toi-build fuzz-toi-smoke fuzz-toi
 fuzz: fuzz-toi
@@ -208,10 +213,11 @@ fuzz-toi: fuzz-toi-build
 # The World driven by random API calls (tests/fuzz/world_fuzz.cpp), from the committed seeds in
 # tests/fuzz/corpus/world. Each smoke run's length is a variable, so CI time can be tuned.
 WORLD_FUZZ := build/fuzz/tests/fuzz/carom_world_fuzz
-# The smoke run is a fixed number of inputs (about 15 s on CI's machine), so that it tries the
-# same ones everywhere, however fast the machine; the time is only a cap.
-WORLD_FUZZ_SMOKE_RUNS ?= 12000
-WORLD_FUZZ_SMOKE_SECONDS ?= 60
+# The smoke run is a fixed number of inputs (about 8 s alone on CI's machine), so that it tries
+# the same ones everywhere, however fast the machine; the time is a cap, which make test's load
+# beside the browser tests can reach first.
+WORLD_FUZZ_SMOKE_RUNS ?= 6000
+WORLD_FUZZ_SMOKE_SECONDS ?= 40
 WORLD_FUZZ_FLAGS := -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=build/fuzz/
 .PHONY: fuzz-world-build fuzz-world-smoke fuzz-world
 fuzz: fuzz-world

@@ -303,6 +303,7 @@ py::object pack(const py::object& n, const py::object& mix, const std::string& b
   std::string json;
   try {
     const std::uint64_t seed_count = cli::parse_seed_count(o.seeds);
+    (void)cli::parse_eos_threads(o.threads);
     if (seed_count > 1 || !comm.is_none() || !out.is_none()) {
       return pack_ensemble(o, seed_count, comm, out);
     }

@@ -25,7 +25,7 @@ using nlohmann::json;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-// About a tenth of a second a packing.
+// About a tenth of a second a packing (jammed at a reduced pressure of 10^6).
 const std::vector<std::string> kJamming{"pack",
                                         "--n",
                                         "120",
@@ -35,7 +35,7 @@ const std::vector<std::string> kJamming{"pack",
                                         "0.01",
                                         "--until-jammed",
                                         "--pressure-limit",
-                                        "1e8",
+                                        "1e6",
                                         "-q"};
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
@@ -128,7 +128,7 @@ TEST(PackSeeds, OutKeepsEachPackingAndANewStartReadsThem) {
   // Other options: nothing read.
   const ToolRun other =
       run_carom({"pack", "--n", "120", "--mix", "1.4:0.5", "--rate", "0.02", "--until-jammed",
-                 "--pressure-limit", "1e8", "-q", "--seeds", "2", "--out", out});
+                 "--pressure-limit", "1e6", "-q", "--seeds", "2", "--out", out});
   EXPECT_EQ(other.exit_code, 0) << other.err;
   EXPECT_THAT(other.err, Not(HasSubstr("read from")));
 }
@@ -157,14 +157,14 @@ TEST(PackSeeds, ASignalReportsThePackingsDoneAndANewStartMakesTheRest) {
   const ScratchDir dir;
   const std::vector<std::string> args{"pack",
                                       "--n",
-                                      "400",
+                                      "200",
                                       "--mix",
                                       "1.4:0.5",
                                       "--rate",
                                       "0.01",
                                       "--until-jammed",
                                       "--pressure-limit",
-                                      "1e8",
+                                      "1e6",
                                       "-q",
                                       "--seeds",
                                       "3",
@@ -228,6 +228,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadSeeds{"NoSeeds", {"--seeds", "0"}, "--seeds"},
         BadSeeds{"TooManySeeds", {"--seeds", "1001"}, "--seeds"},
         BadSeeds{"NoThreads", {"--seeds", "2", "--threads", "0"}, "--threads"},
+        BadSeeds{"NoThreadsForOne", {"--threads", "0"}, "--threads"},
+        BadSeeds{"SeedsPastTheLast", {"--seed", "18446744073709551615", "--seeds", "2"}, "--seeds"},
         BadSeeds{"PictureOfMany", {"--seeds", "2", "--picture", "p.png"}, "--picture"},
         BadSeeds{"StandardOutputAsFolder", {"--seeds", "2", "--out", "-"}, "--out"},
         BadSeeds{"BadStartBeforeAnyRun", {"--seeds", "2", "--start-eta", "0.9"}, "--start-eta"}),

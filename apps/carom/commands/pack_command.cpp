@@ -94,6 +94,7 @@ int run_ensemble(const PackOptions& o, std::uint64_t seeds) {
 
 int run(const PackOptions& o) {
   const std::uint64_t seeds = parse_seed_count(o.seeds);
+  (void)parse_eos_threads(o.threads);  // checked even where one packing leaves it unused
   if (seeds > 1) return run_ensemble(o, seeds);
   const PackRequest r = parse_pack_options(o);
   for (const auto& [option, name] : {std::pair{"--out", &o.out}, {"--picture", &o.picture}}) {

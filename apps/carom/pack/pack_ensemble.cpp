@@ -10,6 +10,7 @@
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -17,6 +18,7 @@
 
 #include "carom/scene.hpp"
 #include "options/readable_number.hpp"
+#include "options/usage_error.hpp"
 #include "pack/packed_scene.hpp"
 #include "system/output_file.hpp"
 
@@ -132,6 +134,10 @@ PackEnsembleOutcome run_pack_ensemble(const PackOptions& o, std::uint64_t seeds,
                                       const EnsembleJob& job) {
   namespace parts = pack_ensemble_parts;
   const std::uint64_t first_seed = parse_pack_options(o).spec.seed;
+  if (seeds > 0 && seeds - 1 > std::numeric_limits<std::uint64_t>::max() - first_seed) {
+    throw UsageError("--seeds", std::to_string(seeds),
+                     "the last seed would pass 2^64 - 1 (from --seed " + o.seed + ")");
+  }
   std::vector<PackRequest> requests;
   for (std::uint64_t k = 0; k < seeds; ++k) {
     requests.push_back(parse_pack_options(parts::with_seed(o, first_seed + k)));

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -61,6 +62,45 @@ py::object json_value(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
+// Ctrl-C while runs go without the GIL: watch() (told on the calling thread about ten times a
+// second) looks for it, stop() answers it to every world, and raise_if_signalled() raises
+// KeyboardInterrupt once the runs have returned.
+class CtrlCWatch {
+ public:
+  [[nodiscard]] std::function<bool()> stop() {
+    return [this] { return signalled_.load(); };
+  }
+  [[nodiscard]] std::function<void(double)> watch() {
+    return [this](double) {
+      const py::gil_scoped_acquire locked;
+      if (PyErr_CheckSignals() != 0) {
+        PyErr_Clear();
+        signalled_.store(true);
+      }
+    };
+  }
+  void raise_if_signalled() const {
+    if (!signalled_.load()) return;
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+
+ private:
+  std::atomic<bool> signalled_{false};
+};
+
+// Each of what `not_kept` lists as a RuntimeWarning (raised where warnings are made errors).
+void warn_not_kept(const std::string& what, const std::vector<std::string>& not_kept) {
+  for (const std::string& failure : not_kept) {
+    std::string warning = what;
+    warning += " was not kept: ";
+    warning += failure;
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
+      throw py::error_already_set();
+    }
+  }
+}
+
 // Runs the points as `carom eos` runs them (gas/eos_sweep.hpp), shared among the job's processes,
 // with checkpoints in `folder` unless it is empty, the GIL released. Ctrl-C stops every point
 // within a few thousand events (the calling thread looks for it ten times a second) and raises
@@ -70,31 +110,14 @@ std::optional<std::vector<cli::GasOutcome>> run_points(const std::vector<cli::Ga
                                                        std::size_t threads,
                                                        const cli::EnsembleJob& job,
                                                        const std::string& folder) {
-  std::atomic<bool> signalled{false};
+  CtrlCWatch ctrl_c;
   cli::EosSweepOutcome sweep;
   {
     const py::gil_scoped_release unlocked;
-    sweep = cli::run_sweep(
-        specs, threads, folder, [&signalled] { return signalled.load(); },
-        [&signalled](double) {
-          const py::gil_scoped_acquire locked;
-          if (PyErr_CheckSignals() != 0) {
-            PyErr_Clear();
-            signalled.store(true);
-          }
-        },
-        job);
+    sweep = cli::run_sweep(specs, threads, folder, ctrl_c.stop(), ctrl_c.watch(), job);
   }
-  if (signalled.load()) {
-    PyErr_SetNone(PyExc_KeyboardInterrupt);
-    throw py::error_already_set();
-  }
-  for (const std::string& failure : sweep.not_kept) {
-    const std::string warning = "a finished run was not kept: " + failure;
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
-      throw py::error_already_set();  // warnings made errors
-    }
-  }
+  ctrl_c.raise_if_signalled();
+  warn_not_kept("a finished run", sweep.not_kept);
   if (!sweep.leads) return std::nullopt;
   for (const std::exception_ptr& failure : sweep.runs.failures) {
     if (failure) std::rethrow_exception(failure);
@@ -237,31 +260,16 @@ py::object pack_ensemble(const cli::PackOptions& o, std::uint64_t seeds, const p
   const cli::SingleProcessJob alone;
   std::optional<CommJob> shared;
   if (!comm.is_none()) shared.emplace(comm);
-  std::atomic<bool> signalled{false};
+  CtrlCWatch ctrl_c;
   cli::PackEnsembleOutcome ensemble;
   {
     const py::gil_scoped_release unlocked;
-    ensemble = cli::run_pack_ensemble(
-        o, seeds, threads, folder, [&signalled] { return signalled.load(); },
-        [&signalled](double) {
-          const py::gil_scoped_acquire locked;
-          if (PyErr_CheckSignals() != 0) {
-            PyErr_Clear();
-            signalled.store(true);
-          }
-        },
-        shared ? static_cast<const cli::EnsembleJob&>(*shared) : alone);
+    ensemble =
+        cli::run_pack_ensemble(o, seeds, threads, folder, ctrl_c.stop(), ctrl_c.watch(),
+                               shared ? static_cast<const cli::EnsembleJob&>(*shared) : alone);
   }
-  if (signalled.load()) {
-    PyErr_SetNone(PyExc_KeyboardInterrupt);
-    throw py::error_already_set();
-  }
-  for (const std::string& failure : ensemble.not_kept) {
-    const std::string warning = "a packing was not kept: " + failure;
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
-      throw py::error_already_set();
-    }
-  }
+  ctrl_c.raise_if_signalled();
+  warn_not_kept("a packing", ensemble.not_kept);
   if (!ensemble.leads) return py::none();
   for (const cli::PackRun& run : ensemble.runs) {
     if (!run.failure.empty()) {

@@ -5,22 +5,20 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <mutex>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 #include "carom/scene.hpp"
 #include "options/readable_number.hpp"
 #include "options/usage_error.hpp"
 #include "pack/packed_scene.hpp"
 #include "system/output_file.hpp"
+#include "system/parallel_runs.hpp"
 
 namespace carom::cli {
 namespace pack_ensemble_parts {
@@ -166,76 +164,51 @@ PackEnsembleOutcome run_pack_ensemble(const PackOptions& o, std::uint64_t seeds,
   }
   const std::vector<std::size_t> mine = share_of_runs(job, to_make);
   std::vector<PackRun> made(mine.size());
-  std::vector<std::atomic<double>> done(mine.size());
   std::atomic<bool> stopped{false};
   const auto stop_once = [&] {
     if (!stopped.load() && stop && stop()) stopped.store(true);
     return stopped.load();
   };
   std::mutex shared;
-  std::condition_variable ended;
-  std::size_t workers_ended = 0;
-  std::atomic<std::size_t> next{0};
-  const auto worker = [&] {
-    for (std::size_t j = next++; j < mine.size() && !stop_once(); j = next++) {
-      const std::size_t k = mine[j];
-      PackRun& run = made[j];
-      run.seed = ensemble.runs[k].seed;
-      try {
-        const PackOptions options = parts::with_seed(o, run.seed);
-        const PackRequest& r = requests[k];
-        const PackOutcome outcome =
-            run_pack_session(options, r, {}, [&](const science::CompressionProgress& p) {
-              done[j].store(std::clamp(progress_fraction(r, p), 0.0, 1.0));
-              return stop_once();
-            });
-        if (outcome.result.end != science::CompressionEnd::interrupted) {
-          run.report = pack_json(options, r, outcome);
-          run.completed = true;
-          if (!folder.empty()) {
-            const Scene scene =
-                packed_scene(outcome.world, description_of(options, outcome.result));
-            const nlohmann::json kept{
-                {"carom_pack_run", 1}, {"key", parts::run_key(r)}, {"report", run.report}};
-            // The scene first: a checkpoint means its packing is written too.
-            std::optional<std::string> failure =
-                write_output(parts::scene_path(folder, run.seed), to_json_text(scene));
-            if (!failure) {
-              failure = write_output(parts::checkpoint_path(folder, run.seed), kept.dump());
-            }
-            if (failure) {
-              const std::lock_guard<std::mutex> lock(shared);
-              ensemble.not_kept.push_back("seed " + std::to_string(run.seed) + ": " + *failure);
+  run_in_parallel(
+      mine.size(), threads, stop_once,
+      [&](std::size_t j, std::atomic<double>& progress) {
+        const std::size_t k = mine[j];
+        PackRun& run = made[j];
+        run.seed = ensemble.runs[k].seed;
+        try {
+          const PackOptions options = parts::with_seed(o, run.seed);
+          const PackRequest& r = requests[k];
+          const PackOutcome outcome =
+              run_pack_session(options, r, {}, [&](const science::CompressionProgress& p) {
+                progress.store(std::clamp(progress_fraction(r, p), 0.0, 1.0));
+                return stop_once();
+              });
+          if (outcome.result.end != science::CompressionEnd::interrupted) {
+            run.report = pack_json(options, r, outcome);
+            run.completed = true;
+            if (!folder.empty()) {
+              const Scene scene =
+                  packed_scene(outcome.world, description_of(options, outcome.result));
+              const nlohmann::json kept{
+                  {"carom_pack_run", 1}, {"key", parts::run_key(r)}, {"report", run.report}};
+              // The scene first: a checkpoint means its packing is written too.
+              std::optional<std::string> failure =
+                  write_output(parts::scene_path(folder, run.seed), to_json_text(scene));
+              if (!failure) {
+                failure = write_output(parts::checkpoint_path(folder, run.seed), kept.dump());
+              }
+              if (failure) {
+                const std::lock_guard<std::mutex> lock(shared);
+                ensemble.not_kept.push_back("seed " + std::to_string(run.seed) + ": " + *failure);
+              }
             }
           }
+        } catch (const std::exception& error) {
+          run.failure = error.what();
         }
-      } catch (const std::exception& error) {
-        run.failure = error.what();
-      }
-      done[j].store(1.0);
-    }
-    const std::lock_guard<std::mutex> lock(shared);
-    ++workers_ended;
-    ended.notify_one();
-  };
-  const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), mine.size());
-  std::vector<std::thread> pool;
-  for (std::size_t t = 0; t < workers; ++t) pool.emplace_back(worker);
-  for (;;) {
-    {
-      std::unique_lock<std::mutex> lock(shared);
-      if (ended.wait_for(lock, std::chrono::milliseconds(100),
-                         [&] { return workers_ended == workers; })) {
-        break;
-      }
-    }
-    if (watch && !mine.empty()) {
-      double sum = 0.0;
-      for (const std::atomic<double>& fraction : done) sum += fraction.load();
-      watch(sum / static_cast<double>(mine.size()));
-    }
-  }
-  for (std::thread& thread : pool) thread.join();
+      },
+      watch);
   // Every rank's packings at rank 0, their reports exactly (JSON numbers to the bit).
   nlohmann::json messages = nlohmann::json::array();
   for (std::size_t j = 0; j < mine.size(); ++j) {
